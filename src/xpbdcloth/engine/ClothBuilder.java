@@ -1,0 +1,192 @@
+package xpbdcloth.engine;
+
+import java.util.ArrayList;
+import java.util.EnumMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * Builds a grid cloth: columns × rows particles spanning width × height metres, hanging in the x–y plane
+ * (top edge at the origin's height) or lying in the x–z plane, with the constraint families asked for.
+ * A rope is a cloth of one column.
+ *
+ * <p>Mass: either an areal density (kg/m²) or a total mass (kg), lumped to the particles by the grid area
+ * (or length) each one stands for, so edge particles weigh half an interior one and corners a quarter.
+ *
+ * <p>Constraint order (the Gauss–Seidel order): structural row-major (each particle's right then lower
+ * edge), then shear, then bend.
+ */
+public final class ClothBuilder {
+    /** Orientation of the rest shape. */
+    public enum Plane { VERTICAL, HORIZONTAL }
+
+    private int columns = 16, rows = 16;
+    private double width = 1, height = 1;
+    private double originX = 0, originY = 0, originZ = 0;
+    private Plane plane = Plane.VERTICAL;
+    private double arealDensity = 0.1;
+    private double totalMass = Double.NaN;
+    private final Map<ConstraintFamily, double[]> families = new EnumMap<>(ConstraintFamily.class);
+    private final List<int[]> pins = new ArrayList<>();
+
+    public ClothBuilder() {
+        family(ConstraintFamily.STRUCTURAL, 1.0, 0.0);
+    }
+
+    /** Particle counts along the width (columns ≥ 1) and the height (rows ≥ 2), at least 2 particles. */
+    public ClothBuilder resolution(int columns, int rows) {
+        Check.atLeast("columns", columns, 1);
+        Check.atLeast("rows", rows, 1);
+        if (columns * (long) rows < 2) throw new IllegalArgumentException("columns*rows must be >= 2, was " + columns * rows);
+        this.columns = columns;
+        this.rows = rows;
+        return this;
+    }
+
+    /** Size in metres (a size along a single-particle direction is ignored). */
+    public ClothBuilder size(double width, double height) {
+        this.width = Check.nonNegative("width", width);
+        this.height = Check.nonNegative("height", height);
+        return this;
+    }
+
+    /** Centre of the top edge (vertical) or of the cloth (horizontal), metres. */
+    public ClothBuilder origin(double x, double y, double z) {
+        Check.finite3("origin", x, y, z);
+        originX = x; originY = y; originZ = z;
+        return this;
+    }
+
+    public ClothBuilder plane(Plane p) {
+        if (p == null) throw new IllegalArgumentException("plane must not be null, was null");
+        plane = p;
+        return this;
+    }
+
+    /** kg/m², &gt; 0. Replaces any total mass. */
+    public ClothBuilder arealDensity(double kgPerSquareMetre) {
+        arealDensity = Check.positive("arealDensity", kgPerSquareMetre);
+        totalMass = Double.NaN;
+        return this;
+    }
+
+    /** kg, &gt; 0, shared by the particles by lumped area. Replaces any areal density. */
+    public ClothBuilder totalMass(double kg) {
+        totalMass = Check.positive("totalMass", kg);
+        return this;
+    }
+
+    /** Includes a family with PBD stiffness k ∈ [0,1] and XPBD compliance α ≥ 0 (m/N). */
+    public ClothBuilder family(ConstraintFamily family, double stiffness, double compliance) {
+        if (family == null || family == ConstraintFamily.COLLISION || family == ConstraintFamily.ATTACHMENT)
+            throw new IllegalArgumentException("family must be STRUCTURAL, SHEAR or BEND, was " + family);
+        Check.inRange("stiffness", stiffness, 0, 1);
+        Check.nonNegative("compliance", compliance);
+        families.put(family, new double[] {stiffness, compliance});
+        return this;
+    }
+
+    public ClothBuilder withoutFamily(ConstraintFamily family) {
+        families.remove(family);
+        return this;
+    }
+
+    /** Pins particle (row, col); checked against the resolution at {@link #build}. */
+    public ClothBuilder pin(int row, int col) {
+        pins.add(new int[] {row, col});
+        return this;
+    }
+
+    public ClothBuilder pinTopCorners() {
+        pins.add(new int[] {0, 0});
+        pins.add(new int[] {0, -1});
+        return this;
+    }
+
+    public Cloth build() {
+        for (int[] pin : pins) {
+            int col = pin[1] < 0 ? columns + pin[1] : pin[1];
+            Check.index("pin row", pin[0], rows);
+            Check.index("pin col", col, columns);
+        }
+        Particles p = new Particles(columns * rows);
+        double dx = columns > 1 ? width / (columns - 1) : 0;
+        double dy = rows > 1 ? height / (rows - 1) : 0;
+        double mass = Double.isNaN(totalMass) ? arealDensity * area() : totalMass;
+        double weightSum = lumpWeightSum(columns) * lumpWeightSum(rows);
+        for (int r = 0; r < rows; r++) {
+            for (int c = 0; c < columns; c++) {
+                int i = r * columns + c;
+                double u = c * dx - 0.5 * width * (columns > 1 ? 1 : 0), t = r * dy;
+                if (plane == Plane.VERTICAL) p.setPosition(i, originX + u, originY - t, originZ);
+                else p.setPosition(i, originX + u, originY, originZ - 0.5 * height * (rows > 1 ? 1 : 0) + t);
+                p.setMass(i, mass * lumpWeight(c, columns) * lumpWeight(r, rows) / weightSum);
+            }
+        }
+        for (int[] pin : pins) p.pin(pin[0] * columns + (pin[1] < 0 ? columns + pin[1] : pin[1]));
+
+        List<Constraint> cs = new ArrayList<>();
+        double[] structural = families.get(ConstraintFamily.STRUCTURAL);
+        if (structural != null) {
+            for (int r = 0; r < rows; r++)
+                for (int c = 0; c < columns; c++) {
+                    int i = r * columns + c;
+                    if (c + 1 < columns) cs.add(tuned(DistanceConstraint.between(p, i, i + 1), ConstraintFamily.STRUCTURAL, structural));
+                    if (r + 1 < rows) cs.add(tuned(DistanceConstraint.between(p, i, i + columns), ConstraintFamily.STRUCTURAL, structural));
+                }
+        }
+        double[] shear = families.get(ConstraintFamily.SHEAR);
+        if (shear != null) {
+            for (int r = 0; r + 1 < rows; r++)
+                for (int c = 0; c + 1 < columns; c++) {
+                    int i = r * columns + c;
+                    cs.add(tuned(ShearConstraint.atCurrentAngle(ConstraintFamily.SHEAR, p, i, i + 1, i + columns), ConstraintFamily.SHEAR, shear));
+                }
+        }
+        double[] bend = families.get(ConstraintFamily.BEND);
+        if (bend != null) {
+            for (int r = 0; r < rows; r++)
+                for (int c = 0; c < columns; c++) {
+                    int i = r * columns + c;
+                    if (c + 2 < columns) cs.add(tuned(BendConstraint.atCurrentShape(ConstraintFamily.BEND, p, i, i + 1, i + 2), ConstraintFamily.BEND, bend));
+                    if (r + 2 < rows) cs.add(tuned(BendConstraint.atCurrentShape(ConstraintFamily.BEND, p, i, i + columns, i + 2 * columns), ConstraintFamily.BEND, bend));
+                }
+        }
+        int[] tris = new int[Math.max(0, (columns - 1) * (rows - 1)) * 6];
+        int n = 0;
+        for (int r = 0; r + 1 < rows; r++)
+            for (int c = 0; c + 1 < columns; c++) {
+                int i = r * columns + c;
+                // Alternate the diagonal so the mesh has no preferred shear direction.
+                if (((r + c) & 1) == 0) {
+                    tris[n++] = i; tris[n++] = i + columns; tris[n++] = i + 1;
+                    tris[n++] = i + 1; tris[n++] = i + columns; tris[n++] = i + columns + 1;
+                } else {
+                    tris[n++] = i; tris[n++] = i + columns; tris[n++] = i + columns + 1;
+                    tris[n++] = i; tris[n++] = i + columns + 1; tris[n++] = i + 1;
+                }
+            }
+        return new Cloth(p, columns, rows, cs, tris);
+    }
+
+    private double area() {
+        double w = columns > 1 ? width : 1, h = rows > 1 ? height : 1;
+        return w * h;
+    }
+
+    private static Constraint tuned(Constraint c, ConstraintFamily family, double[] kAlpha) {
+        c.setStiffness(kAlpha[0]);
+        c.setCompliance(kAlpha[1]);
+        return c;
+    }
+
+    /** Share of a particle along one grid direction: half at the ends, whole inside, 1 for a single one. */
+    private static double lumpWeight(int i, int count) {
+        if (count == 1) return 1;
+        return i == 0 || i == count - 1 ? 0.5 : 1;
+    }
+
+    private static double lumpWeightSum(int count) {
+        return count == 1 ? 1 : count - 1;
+    }
+}

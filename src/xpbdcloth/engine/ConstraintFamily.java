@@ -1,0 +1,15 @@
+package xpbdcloth.engine;
+
+/** The kinds of constraint a cloth is built from; stiffness and compliance are set per family. */
+public enum ConstraintFamily {
+    /** Distance constraints along the grid's rows and columns. */
+    STRUCTURAL,
+    /** Angle constraints between the row and column edges meeting at a vertex. */
+    SHEAR,
+    /** Triangle bending constraints over three consecutive particles (Kelager et al. 2010). */
+    BEND,
+    /** Sphere contacts: always hard (k = 1, α = 0). */
+    COLLISION,
+    /** A particle held at a target point, e.g. by the mouse. */
+    ATTACHMENT
+}

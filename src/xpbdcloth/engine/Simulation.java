@@ -1,0 +1,182 @@
+package xpbdcloth.engine;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * A set of particles, their constraints, kinematic spheres and scripts, stepped by a sequential
+ * Gauss–Seidel solver.
+ *
+ * <p>{@code step(dt)} runs, for each of s substeps of h = dt/s (Macklin et al. 2019, "Small Steps"):
+ * <ol>
+ *   <li><b>predict</b>: semi-implicit Euler, v += h·(g + w·f), x_prev = x, x += h·v (free particles);</li>
+ *   <li><b>kinematics</b>: scripted pins and spheres move to their place at the substep's end;</li>
+ *   <li><b>reset</b>: λ = 0 for every constraint (once per substep, never per sweep);</li>
+ *   <li><b>solve</b>: n sweeps, each projecting every constraint in order with the newest positions;</li>
+ *   <li><b>update velocities</b>: v = (x − x_prev)/h.</li>
+ * </ol>
+ * External forces are gathered once per step and act on all of its substeps. The constraint order is
+ * cloth constraints as added, then attachments, then contacts, so hard contacts have the last word.
+ */
+public final class Simulation {
+    private final Particles particles;
+    private final SolverSettings settings;
+    private final List<Constraint> body = new ArrayList<>();
+    private final List<AttachmentConstraint> attachments = new ArrayList<>();
+    private final List<Sphere> spheres = new ArrayList<>();
+    private final List<SphereCollisionConstraint> contacts = new ArrayList<>();
+    private final List<Kinematics> kinematics = new ArrayList<>();
+    private final List<ExternalForce> forces = new ArrayList<>();
+    private final SolverContext ctx = new SolverContext();
+    /** The solve order, rebuilt only when the set of constraints changes. */
+    private Constraint[] order = new Constraint[0];
+    private double time;
+    private long stepCount;
+
+    public Simulation(Particles particles, SolverSettings settings) {
+        if (particles == null) throw new IllegalArgumentException("particles must not be null, was null");
+        if (settings == null) throw new IllegalArgumentException("settings must not be null, was null");
+        this.particles = particles;
+        this.settings = settings;
+    }
+
+    public Particles particles() { return particles; }
+    public SolverSettings settings() { return settings; }
+    public double time() { return time; }
+    public long stepCount() { return stepCount; }
+    public List<Sphere> spheres() { return java.util.Collections.unmodifiableList(spheres); }
+
+    /** The constraints in solve order (a live view; do not modify). */
+    public Constraint[] constraints() { return order; }
+
+    /** Adds a constraint on particles that exist. */
+    public Simulation add(Constraint c) {
+        if (c == null) throw new IllegalArgumentException("constraint must not be null, was null");
+        for (int i : c.particles()) Check.index("constraint particle", i, particles.count());
+        body.add(c);
+        rebuildOrder();
+        return this;
+    }
+
+    public Simulation addAll(List<? extends Constraint> cs) {
+        for (Constraint c : cs) for (int i : c.particles()) Check.index("constraint particle", i, particles.count());
+        body.addAll(cs);
+        rebuildOrder();
+        return this;
+    }
+
+    /** Adds a sphere and a contact with every particle (brute force, O(particles × spheres)). */
+    public Simulation add(Sphere s) {
+        if (s == null) throw new IllegalArgumentException("sphere must not be null, was null");
+        spheres.add(s);
+        for (int i = 0; i < particles.count(); i++) contacts.add(new SphereCollisionConstraint(i, s));
+        rebuildOrder();
+        return this;
+    }
+
+    public Simulation add(Kinematics k) {
+        if (k == null) throw new IllegalArgumentException("kinematics must not be null, was null");
+        kinematics.add(k);
+        return this;
+    }
+
+    public Simulation add(ExternalForce f) {
+        if (f == null) throw new IllegalArgumentException("force must not be null, was null");
+        forces.add(f);
+        return this;
+    }
+
+    public Simulation remove(ExternalForce f) {
+        forces.remove(f);
+        return this;
+    }
+
+    /** Holds particle i at (x, y, z) until {@link #release}; returns the attachment to move its target. */
+    public AttachmentConstraint attach(int i, double x, double y, double z) {
+        Check.index("particle", i, particles.count());
+        AttachmentConstraint a = new AttachmentConstraint(i, x, y, z);
+        attachments.add(a);
+        rebuildOrder();
+        return a;
+    }
+
+    public void release(AttachmentConstraint a) {
+        if (attachments.remove(a)) rebuildOrder();
+    }
+
+    /** Sets PBD stiffness k for every constraint of a family. */
+    public void setStiffness(ConstraintFamily family, double k) {
+        Check.inRange("stiffness", k, 0, 1);
+        for (Constraint c : body) if (c.family() == family) c.setStiffness(k);
+    }
+
+    /** Sets XPBD compliance α (m/N) for every constraint of a family. */
+    public void setCompliance(ConstraintFamily family, double alpha) {
+        Check.nonNegative("compliance", alpha);
+        for (Constraint c : body) if (c.family() == family) c.setCompliance(alpha);
+    }
+
+    private void rebuildOrder() {
+        Constraint[] next = new Constraint[body.size() + attachments.size() + contacts.size()];
+        int n = 0;
+        for (Constraint c : body) next[n++] = c;
+        for (Constraint c : attachments) next[n++] = c;
+        for (Constraint c : contacts) next[n++] = c;
+        order = next;
+    }
+
+    /** One step of the settings' timestep. */
+    public void step() { step(settings.timestep()); }
+
+    /** One step of dt seconds, split into the settings' substeps. */
+    public void step(double dt) {
+        Check.positive("dt", dt);
+        final int substeps = settings.substeps(), iterations = settings.iterations();
+        final double h = dt / substeps;
+        for (int f = 0, nf = forces.size(); f < nf; f++) forces.get(f).apply(particles, time);
+        ctx.load(settings, h);
+        final Constraint[] cs = order;
+        for (int s = 0; s < substeps; s++) {
+            predict(h);
+            final double t = time + h;
+            for (int k = 0, nk = kinematics.size(); k < nk; k++) kinematics.get(k).apply(particles, t);
+            for (int k = 0, nk = spheres.size(); k < nk; k++) spheres.get(k).advance(t, h);
+            for (Constraint c : cs) c.beginSubstep(ctx);
+            for (int it = 0; it < iterations; it++) {
+                for (Constraint c : cs) c.project(particles, ctx);
+            }
+            updateVelocities(h);
+            time = t;
+        }
+        java.util.Arrays.fill(particles.force, 0);
+        stepCount++;
+    }
+
+    private void predict(double h) {
+        final double[] x = particles.x, prev = particles.prev, v = particles.v, w = particles.w, f = particles.force;
+        final double gx = settings.gravityX(), gy = settings.gravityY(), gz = settings.gravityZ();
+        for (int i = 0, n = particles.count(); i < n; i++) {
+            final int k = 3 * i;
+            prev[k] = x[k]; prev[k + 1] = x[k + 1]; prev[k + 2] = x[k + 2];
+            final double wi = w[i];
+            if (wi == 0) continue;
+            v[k] += h * (gx + wi * f[k]);
+            v[k + 1] += h * (gy + wi * f[k + 1]);
+            v[k + 2] += h * (gz + wi * f[k + 2]);
+            x[k] += h * v[k]; x[k + 1] += h * v[k + 1]; x[k + 2] += h * v[k + 2];
+        }
+    }
+
+    private void updateVelocities(double h) {
+        final double[] x = particles.x, prev = particles.prev, v = particles.v;
+        final double inv = 1.0 / h;
+        for (int k = 0, n = 3 * particles.count(); k < n; k++) v[k] = (x[k] - prev[k]) * inv;
+    }
+
+    /** Places every sphere at its path's start and sets the clock to 0 (scene reset). */
+    public void resetClock() {
+        time = 0;
+        stepCount = 0;
+        for (Sphere s : spheres) s.moveTo(0);
+    }
+}

@@ -1,0 +1,69 @@
+package xpbdcloth.engine;
+
+/**
+ * A kinematic sphere: it moves along a {@link SpherePath} and spins with angular velocity ω, pushes
+ * particles out and drags them by Coulomb friction, and is never pushed back (infinite mass).
+ */
+public final class Sphere {
+    private final SpherePath path;
+    final double radius;
+    /** Cloth thickness kept between particle centres and the surface, m. */
+    final double margin;
+    final double staticFriction, kineticFriction;
+    /** Angular velocity ω, rad/s. */
+    double omegaX, omegaY, omegaZ;
+    /** Centre now, and its velocity over the last substep (m/s). */
+    double cx, cy, cz, vx, vy, vz;
+    /** Spin angle accumulated about ω, rad, for drawing a marking that shows the spin. */
+    double spinAngle;
+    private final double[] scratch = new double[3];
+
+    /**
+     * @param radius          m, &gt; 0
+     * @param margin          m, ≥ 0: the cloth's half thickness
+     * @param staticFriction  μₛ ≥ 0
+     * @param kineticFriction μₖ ≥ 0
+     */
+    public Sphere(SpherePath path, double radius, double margin, double staticFriction, double kineticFriction) {
+        if (path == null) throw new IllegalArgumentException("path must not be null, was null");
+        this.path = path;
+        this.radius = Check.positive("radius", radius);
+        this.margin = Check.nonNegative("margin", margin);
+        this.staticFriction = Check.nonNegative("staticFriction", staticFriction);
+        this.kineticFriction = Check.nonNegative("kineticFriction", kineticFriction);
+        moveTo(0);
+    }
+
+    public Sphere spin(double wx, double wy, double wz) {
+        Check.finite3("angularVelocity", wx, wy, wz);
+        omegaX = wx; omegaY = wy; omegaZ = wz;
+        return this;
+    }
+
+    /** Places the centre at time t with zero velocity (scene start or reset). */
+    public void moveTo(double t) {
+        path.centreAt(t, scratch);
+        cx = scratch[0]; cy = scratch[1]; cz = scratch[2];
+        vx = vy = vz = 0;
+    }
+
+    /** Moves the centre to its place at time t, h seconds after the last place; velocity = displacement/h. */
+    void advance(double t, double h) {
+        path.centreAt(t, scratch);
+        vx = (scratch[0] - cx) / h; vy = (scratch[1] - cy) / h; vz = (scratch[2] - cz) / h;
+        cx = scratch[0]; cy = scratch[1]; cz = scratch[2];
+        spinAngle += Math.sqrt(omegaX * omegaX + omegaY * omegaY + omegaZ * omegaZ) * h;
+    }
+
+    public double radius() { return radius; }
+    public double margin() { return margin; }
+    public double staticFriction() { return staticFriction; }
+    public double kineticFriction() { return kineticFriction; }
+    public double centreX() { return cx; }
+    public double centreY() { return cy; }
+    public double centreZ() { return cz; }
+    public double omegaX() { return omegaX; }
+    public double omegaY() { return omegaY; }
+    public double omegaZ() { return omegaZ; }
+    public double spinAngle() { return spinAngle; }
+}

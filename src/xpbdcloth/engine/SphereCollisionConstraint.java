@@ -1,0 +1,81 @@
+package xpbdcloth.engine;
+
+/**
+ * Contact between particle i and a kinematic sphere (centre c, radius r, margin m), with Coulomb friction
+ * against the moving, spinning surface.
+ *
+ * <pre>
+ *   C(x) = |x − c| − (r + m) ≥ 0        (an inequality: projected only while violated)
+ *   ∇C   = n = (x − c)/|x − c|,         Σ wᵢ|∇ᵢC|² = w   (the sphere is kinematic: w = 0)
+ * </pre>
+ * The contact is hard in both modes (k = 1, α = 0): Δx_n = −C n. Friction then acts on the particle's
+ * displacement over the substep relative to the surface, Δx_rel = (x − x_prev) − h·v_s, where the surface
+ * velocity at the contact point is v_s = v_sphere + ω × (r n). With Δx_t its part tangent to the sphere and
+ * d = |Δx_n| the normal correction just applied:
+ * static friction removes Δx_t entirely while |Δx_t| &lt; μₛ d; otherwise kinetic friction removes
+ * Δx_t · min(μₖ d / |Δx_t|, 1).
+ * Source: Müller et al. 2007 §4.3 (collision constraints); friction as position-level Coulomb friction in
+ * Macklin et al. 2014, "Unified Particle Physics for Real-Time Applications", eq. (24)–(25).
+ * Degenerate case: a particle exactly at the centre has no normal; it is pushed out along +y (up), a fixed
+ * choice so the result is deterministic.
+ */
+public final class SphereCollisionConstraint extends Constraint {
+    final int i;
+    final Sphere sphere;
+
+    public SphereCollisionConstraint(int particle, Sphere sphere) {
+        super(ConstraintFamily.COLLISION);
+        if (sphere == null) throw new IllegalArgumentException("sphere must not be null, was null");
+        this.i = Check.atLeast("particle", particle, 0);
+        this.sphere = sphere;
+    }
+
+    public Sphere sphere() { return sphere; }
+
+    @Override public int[] particles() { return new int[] {i}; }
+
+    @Override public double evaluate(Particles p) {
+        double dx = p.x[3 * i] - sphere.cx, dy = p.x[3 * i + 1] - sphere.cy, dz = p.x[3 * i + 2] - sphere.cz;
+        return Math.sqrt(dx * dx + dy * dy + dz * dz) - (sphere.radius + sphere.margin);
+    }
+
+    @Override public void gradient(Particles p, double[] out) {
+        double dx = p.x[3 * i] - sphere.cx, dy = p.x[3 * i + 1] - sphere.cy, dz = p.x[3 * i + 2] - sphere.cz;
+        double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        if (len < DistanceConstraint.MIN_LENGTH) { out[0] = 0; out[1] = 1; out[2] = 0; return; }
+        out[0] = dx / len; out[1] = dy / len; out[2] = dz / len;
+    }
+
+    @Override protected void project(Particles p, SolverContext ctx) {
+        final double[] x = p.x;
+        final int k = 3 * i;
+        final Sphere s = sphere;
+        double dx = x[k] - s.cx, dy = x[k + 1] - s.cy, dz = x[k + 2] - s.cz;
+        double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        double C = len - (s.radius + s.margin);
+        lastC = C;
+        double w = p.w[i];
+        if (C >= 0 || w == 0) return;
+        double nx, ny, nz;
+        if (len < DistanceConstraint.MIN_LENGTH) { nx = 0; ny = 1; nz = 0; }
+        else { nx = dx / len; ny = dy / len; nz = dz / len; }
+        double normalCorrection = w * hardDeltaLambda(C, w); // = −C > 0
+        x[k] += normalCorrection * nx; x[k + 1] += normalCorrection * ny; x[k + 2] += normalCorrection * nz;
+
+        // Surface velocity at the contact point r n: v_sphere + ω × (r n).
+        double rx = s.radius * nx, ry = s.radius * ny, rz = s.radius * nz;
+        double vsx = s.vx + s.omegaY * rz - s.omegaZ * ry;
+        double vsy = s.vy + s.omegaZ * rx - s.omegaX * rz;
+        double vsz = s.vz + s.omegaX * ry - s.omegaY * rx;
+        double h = ctx.h;
+        double rdx = x[k] - p.prev[k] - h * vsx, rdy = x[k + 1] - p.prev[k + 1] - h * vsy, rdz = x[k + 2] - p.prev[k + 2] - h * vsz;
+        double along = rdx * nx + rdy * ny + rdz * nz;
+        double tx = rdx - along * nx, ty = rdy - along * ny, tz = rdz - along * nz;
+        double slip = Math.sqrt(tx * tx + ty * ty + tz * tz);
+        if (slip == 0) return;
+        double removed = slip < s.staticFriction * normalCorrection
+                ? 1.0
+                : Math.min(s.kineticFriction * normalCorrection / slip, 1.0);
+        x[k] -= removed * tx; x[k + 1] -= removed * ty; x[k + 2] -= removed * tz;
+    }
+}

@@ -1,0 +1,7 @@
+package xpbdcloth.tools;
+
+public final class Main {
+    public static void main(String[] args) {
+        System.out.println("xpbd-cloth");
+    }
+}
