@@ -1,0 +1,123 @@
+package xpbdcloth.scene;
+
+import java.util.Collections;
+import java.util.EnumMap;
+import java.util.List;
+import java.util.Map;
+import xpbdcloth.engine.ClothBuilder;
+import xpbdcloth.engine.ConstraintFamily;
+import xpbdcloth.engine.ConstraintMode;
+
+/**
+ * Everything a scene is made of, as read from a preset file by {@link PresetLoader}: the cloth, its
+ * constraint families, the solver, kinematic spheres, scripted pins and wind. Immutable and already
+ * validated; units are SI (m, s, kg, N, rad).
+ */
+public final class Preset {
+    public final String name;
+    public final String description;
+    public final Cloth cloth;
+    /** k and α per family; a family absent here is not built. */
+    public final Map<ConstraintFamily, Material> families;
+    public final Solver solver;
+    public final List<SphereSpec> spheres;
+    public final List<PinMotion> pinMotions;
+    /** Null when the preset has no wind. */
+    public final WindSpec wind;
+
+    Preset(String name, String description, Cloth cloth, Map<ConstraintFamily, Material> families, Solver solver,
+           List<SphereSpec> spheres, List<PinMotion> pinMotions, WindSpec wind) {
+        this.name = name;
+        this.description = description;
+        this.cloth = cloth;
+        this.families = Collections.unmodifiableMap(new EnumMap<>(families));
+        this.solver = solver;
+        this.spheres = Collections.unmodifiableList(spheres);
+        this.pinMotions = Collections.unmodifiableList(pinMotions);
+        this.wind = wind;
+    }
+
+    /** The grid: resolution, size (m), plane, origin (m), mass, pinned (row, col) pairs. */
+    public static final class Cloth {
+        public final int columns, rows;
+        public final double width, height;
+        public final ClothBuilder.Plane plane;
+        public final double[] origin;
+        /** Exactly one of these is finite. */
+        public final double arealDensity, totalMass;
+        public final List<int[]> pins;
+
+        Cloth(int columns, int rows, double width, double height, ClothBuilder.Plane plane, double[] origin,
+              double arealDensity, double totalMass, List<int[]> pins) {
+            this.columns = columns; this.rows = rows; this.width = width; this.height = height;
+            this.plane = plane; this.origin = origin; this.arealDensity = arealDensity; this.totalMass = totalMass;
+            this.pins = Collections.unmodifiableList(pins);
+        }
+    }
+
+    /** PBD stiffness k ∈ [0,1] and XPBD compliance α ≥ 0 of one family. */
+    public static final class Material {
+        public final double stiffness, compliance;
+
+        Material(double stiffness, double compliance) {
+            this.stiffness = stiffness;
+            this.compliance = compliance;
+        }
+    }
+
+    public static final class Solver {
+        public final ConstraintMode mode;
+        public final int iterations, substeps;
+        public final double dt;
+        public final boolean mullerCorrection;
+        public final double[] gravity;
+
+        Solver(ConstraintMode mode, int iterations, int substeps, double dt, boolean mullerCorrection, double[] gravity) {
+            this.mode = mode; this.iterations = iterations; this.substeps = substeps; this.dt = dt;
+            this.mullerCorrection = mullerCorrection; this.gravity = gravity;
+        }
+    }
+
+    /** A kinematic sphere and its path: fixed, linear, circle or oscillation. */
+    public static final class SphereSpec {
+        public final double radius, margin, staticFriction, kineticFriction;
+        public final double[] angularVelocity;
+        public final String path;
+        /** fixed: centre; linear: start; circle and oscillation: centre. */
+        public final double[] centre;
+        /** linear: velocity (m/s); oscillation: amplitude (m). */
+        public final double[] vector;
+        /** circle: radius (m). */
+        public final double pathRadius;
+        /** circle: angular speed (rad/s); oscillation: frequency (Hz). */
+        public final double rate;
+
+        SphereSpec(double radius, double margin, double staticFriction, double kineticFriction, double[] angularVelocity,
+                   String path, double[] centre, double[] vector, double pathRadius, double rate) {
+            this.radius = radius; this.margin = margin; this.staticFriction = staticFriction;
+            this.kineticFriction = kineticFriction; this.angularVelocity = angularVelocity; this.path = path;
+            this.centre = centre; this.vector = vector; this.pathRadius = pathRadius; this.rate = rate;
+        }
+    }
+
+    /** A pinned particle moved by displacement (m) over [start, start + duration] s, eased, then held. */
+    public static final class PinMotion {
+        public final int row, col;
+        public final double[] displacement;
+        public final double start, duration;
+
+        PinMotion(int row, int col, double[] displacement, double start, double duration) {
+            this.row = row; this.col = col; this.displacement = displacement; this.start = start; this.duration = duration;
+        }
+    }
+
+    /** Wind velocity (m/s), drag coefficient (kg/(m²·s)) and gust strength ∈ [0, 1]. */
+    public static final class WindSpec {
+        public final double[] velocity;
+        public final double drag, gust;
+
+        WindSpec(double[] velocity, double drag, double gust) {
+            this.velocity = velocity; this.drag = drag; this.gust = gust;
+        }
+    }
+}

@@ -1,0 +1,329 @@
+package xpbdcloth.scene;
+
+import com.fasterxml.jackson.core.JsonParser;
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.EnumMap;
+import java.util.Iterator;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeSet;
+import xpbdcloth.engine.ClothBuilder;
+import xpbdcloth.engine.ConstraintFamily;
+import xpbdcloth.engine.ConstraintMode;
+
+/**
+ * Reads scene presets (JSON) strictly: bad syntax, a missing or unknown field, a wrong type or a value out
+ * of range is a {@link PresetException} naming the file, the field and the problem. The format is
+ * documented in the README ("Presets"); the files in {@code data/} are its examples.
+ */
+public final class PresetLoader {
+    /** The presets that ship with the project, in the order the sketch offers them. */
+    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere");
+
+    static final int MAX_RESOLUTION = 512;
+
+    private static final ObjectMapper JSON = new ObjectMapper()
+            .enable(JsonParser.Feature.STRICT_DUPLICATE_DETECTION);
+
+    private PresetLoader() {}
+
+    /** A built-in preset by name (from the jar), e.g. "hanging". */
+    public static Preset builtIn(String name) {
+        String file = name + ".json";
+        try (InputStream in = PresetLoader.class.getResourceAsStream("/presets/" + file)) {
+            if (in == null) throw new PresetException(name, "(file)", "no built-in preset of that name; built-in: " + String.join(", ", BUILT_IN));
+            return parse(file, new String(in.readAllBytes(), StandardCharsets.UTF_8));
+        } catch (IOException e) {
+            throw new PresetException(file, "(file)", "cannot be read: " + e.getMessage());
+        }
+    }
+
+    /** A preset file on disk. */
+    public static Preset load(Path path) {
+        String file = path.toString();
+        if (Files.isDirectory(path)) throw new PresetException(file, "(file)", "is a directory, not a preset file");
+        if (!Files.exists(path)) throw new PresetException(file, "(file)", "does not exist");
+        try {
+            return parse(file, Files.readString(path, StandardCharsets.UTF_8));
+        } catch (IOException e) {
+            throw new PresetException(file, "(file)", "cannot be read: " + e.getMessage());
+        }
+    }
+
+    /** A built-in name or a path to a file. */
+    public static Preset byNameOrPath(String nameOrPath) {
+        if (BUILT_IN.contains(nameOrPath)) return builtIn(nameOrPath);
+        return load(Path.of(nameOrPath));
+    }
+
+    /** Parses preset text; {@code file} names it in errors. */
+    public static Preset parse(String file, String text) {
+        if (text.isBlank()) throw new PresetException(file, "(file)", "is empty");
+        JsonNode root;
+        try {
+            root = JSON.readTree(text);
+        } catch (JsonProcessingException e) {
+            String where = e.getLocation() == null ? "" : " at line " + e.getLocation().getLineNr() + " column " + e.getLocation().getColumnNr();
+            throw new PresetException(file, "(syntax)", "not valid JSON" + where + ": " + e.getOriginalMessage());
+        }
+        return new Reader(file).preset(new Node(root, ""));
+    }
+
+    /** A JSON value and its path, for messages. */
+    private static final class Node {
+        final JsonNode json;
+        final String path;
+
+        Node(JsonNode json, String path) {
+            this.json = json;
+            this.path = path;
+        }
+
+        String child(String name) { return path.isEmpty() ? name : path + "." + name; }
+    }
+
+    private static final class Reader {
+        final String file;
+
+        Reader(String file) { this.file = file; }
+
+        PresetException fail(String field, String problem) {
+            return new PresetException(file, field.isEmpty() ? "(root)" : field, problem);
+        }
+
+        Preset preset(Node root) {
+            object(root, Set.of("name", "description", "cloth", "families", "solver", "spheres", "pinMotions", "wind"));
+            String name = string(required(root, "name"));
+            Node d = optional(root, "description");
+            String description = d == null ? "" : string(d);
+            Preset.Cloth cloth = cloth(required(root, "cloth"));
+            Map<ConstraintFamily, Preset.Material> families = families(required(root, "families"));
+            Preset.Solver solver = solver(required(root, "solver"));
+            List<Preset.SphereSpec> spheres = new ArrayList<>();
+            Node ss = optional(root, "spheres");
+            if (ss != null) for (Node s : array(ss)) spheres.add(sphere(s));
+            List<Preset.PinMotion> motions = new ArrayList<>();
+            Node ms = optional(root, "pinMotions");
+            if (ms != null) for (Node m : array(ms)) motions.add(pinMotion(m, cloth));
+            Node w = optional(root, "wind");
+            return new Preset(name, description, cloth, families, solver, spheres, motions, w == null ? null : wind(w));
+        }
+
+        Preset.Cloth cloth(Node n) {
+            object(n, Set.of("columns", "rows", "width", "height", "plane", "origin", "arealDensity", "totalMass", "pins"));
+            int columns = integer(required(n, "columns"), 1, MAX_RESOLUTION);
+            int rows = integer(required(n, "rows"), 1, MAX_RESOLUTION);
+            if (columns * rows < 2) throw fail(n.child("rows"), "the cloth needs at least 2 particles, columns*rows was " + columns * rows);
+            double width = number(required(n, "width"), 0, 100);
+            double height = number(required(n, "height"), 0, 100);
+            if (columns > 1 && width == 0) throw fail(n.child("width"), "must be > 0 when columns > 1, was 0");
+            if (rows > 1 && height == 0) throw fail(n.child("height"), "must be > 0 when rows > 1, was 0");
+            Node pl = optional(n, "plane");
+            ClothBuilder.Plane plane = pl == null ? ClothBuilder.Plane.VERTICAL : choice(pl, ClothBuilder.Plane.class);
+            Node o = optional(n, "origin");
+            double[] origin = o == null ? new double[3] : vector(o);
+            Node ad = optional(n, "arealDensity"), tm = optional(n, "totalMass");
+            if ((ad == null) == (tm == null))
+                throw fail(n.path.isEmpty() ? "cloth" : n.path, "needs exactly one of arealDensity (kg/m²) and totalMass (kg)");
+            double arealDensity = ad == null ? Double.NaN : number(ad, 1e-9, 1e6);
+            double totalMass = tm == null ? Double.NaN : number(tm, 1e-9, 1e6);
+            List<int[]> pins = new ArrayList<>();
+            Node ps = optional(n, "pins");
+            if (ps != null) for (Node p : array(ps)) pins.add(pin(p, columns, rows));
+            return new Preset.Cloth(columns, rows, width, height, plane, origin, arealDensity, totalMass, pins);
+        }
+
+        int[] pin(Node p, int columns, int rows) {
+            if (p.json.isTextual()) {
+                switch (p.json.asText()) {
+                    case "top-left": return new int[] {0, 0};
+                    case "top-right": return new int[] {0, columns - 1};
+                    case "bottom-left": return new int[] {rows - 1, 0};
+                    case "bottom-right": return new int[] {rows - 1, columns - 1};
+                    default: throw fail(p.path, "must be [row, col] or one of top-left, top-right, bottom-left, bottom-right, was \"" + p.json.asText() + "\"");
+                }
+            }
+            if (!p.json.isArray() || p.json.size() != 2) throw fail(p.path, "must be [row, col] or a corner name, was " + describe(p.json));
+            Node r = new Node(p.json.get(0), p.path + "[0]"), c = new Node(p.json.get(1), p.path + "[1]");
+            int row = integer(r, Integer.MIN_VALUE, Integer.MAX_VALUE), col = integer(c, Integer.MIN_VALUE, Integer.MAX_VALUE);
+            if (row < 0 || row >= rows || col < 0 || col >= columns)
+                throw fail(p.path, "pin [" + row + ", " + col + "] is outside the " + rows + "x" + columns + " grid (rows x columns)");
+            return new int[] {row, col};
+        }
+
+        Map<ConstraintFamily, Preset.Material> families(Node n) {
+            object(n, Set.of("structural", "shear", "bend"));
+            Map<ConstraintFamily, Preset.Material> out = new EnumMap<>(ConstraintFamily.class);
+            out.put(ConstraintFamily.STRUCTURAL, material(required(n, "structural")));
+            Node s = optional(n, "shear");
+            if (s != null) out.put(ConstraintFamily.SHEAR, material(s));
+            Node b = optional(n, "bend");
+            if (b != null) out.put(ConstraintFamily.BEND, material(b));
+            return out;
+        }
+
+        Preset.Material material(Node n) {
+            object(n, Set.of("stiffness", "compliance"));
+            return new Preset.Material(number(required(n, "stiffness"), 0, 1), number(required(n, "compliance"), 0, 1e6));
+        }
+
+        Preset.Solver solver(Node n) {
+            object(n, Set.of("mode", "iterations", "substeps", "dt", "mullerCorrection", "gravity"));
+            ConstraintMode mode = choice(required(n, "mode"), ConstraintMode.class);
+            int iterations = integer(required(n, "iterations"), 1, 1000);
+            Node s = optional(n, "substeps");
+            int substeps = s == null ? 1 : integer(s, 1, 100);
+            double dt = number(required(n, "dt"), 0, 1);
+            if (dt == 0) throw fail(n.child("dt"), "must be > 0, was 0");
+            Node m = optional(n, "mullerCorrection");
+            boolean muller = m == null || bool(m);
+            Node g = optional(n, "gravity");
+            double[] gravity = g == null ? new double[] {0, -9.81, 0} : vector(g);
+            return new Preset.Solver(mode, iterations, substeps, dt, muller, gravity);
+        }
+
+        Preset.SphereSpec sphere(Node n) {
+            object(n, Set.of("radius", "margin", "staticFriction", "kineticFriction", "angularVelocity", "path"));
+            double radius = number(required(n, "radius"), 1e-6, 100);
+            Node m = optional(n, "margin");
+            double margin = m == null ? 0 : number(m, 0, 1);
+            double mus = number(required(n, "staticFriction"), 0, 100);
+            double muk = number(required(n, "kineticFriction"), 0, 100);
+            Node w = optional(n, "angularVelocity");
+            double[] omega = w == null ? new double[3] : vector(w);
+            Node p = required(n, "path");
+            object(p, Set.of("type", "centre", "start", "velocity", "radius", "angularSpeed", "amplitude", "frequency"));
+            String type = string(required(p, "type"));
+            switch (type) {
+                case "fixed":
+                    only(p, Set.of("type", "centre"));
+                    return new Preset.SphereSpec(radius, margin, mus, muk, omega, type, vector(required(p, "centre")), new double[3], 0, 0);
+                case "linear":
+                    only(p, Set.of("type", "start", "velocity"));
+                    return new Preset.SphereSpec(radius, margin, mus, muk, omega, type, vector(required(p, "start")), vector(required(p, "velocity")), 0, 0);
+                case "circle":
+                    only(p, Set.of("type", "centre", "radius", "angularSpeed"));
+                    return new Preset.SphereSpec(radius, margin, mus, muk, omega, type, vector(required(p, "centre")), new double[3],
+                            number(required(p, "radius"), 0, 100), number(required(p, "angularSpeed"), -1e3, 1e3));
+                case "oscillation":
+                    only(p, Set.of("type", "centre", "amplitude", "frequency"));
+                    return new Preset.SphereSpec(radius, margin, mus, muk, omega, type, vector(required(p, "centre")), vector(required(p, "amplitude")),
+                            0, number(required(p, "frequency"), 0, 1e3));
+                default:
+                    throw fail(p.child("type"), "must be one of fixed, linear, circle, oscillation, was \"" + type + "\"");
+            }
+        }
+
+        Preset.PinMotion pinMotion(Node n, Preset.Cloth cloth) {
+            object(n, Set.of("pin", "displacement", "start", "duration"));
+            int[] pin = pin(required(n, "pin"), cloth.columns, cloth.rows);
+            boolean pinned = false;
+            for (int[] p : cloth.pins) pinned |= p[0] == pin[0] && p[1] == pin[1];
+            if (!pinned) throw fail(n.child("pin"), "particle [" + pin[0] + ", " + pin[1] + "] must also be listed in cloth.pins");
+            Node s = optional(n, "start");
+            return new Preset.PinMotion(pin[0], pin[1], vector(required(n, "displacement")), s == null ? 0 : number(s, 0, 1e6),
+                    number(required(n, "duration"), 1e-6, 1e6));
+        }
+
+        Preset.WindSpec wind(Node n) {
+            object(n, Set.of("velocity", "drag", "gust"));
+            Node g = optional(n, "gust");
+            return new Preset.WindSpec(vector(required(n, "velocity")), number(required(n, "drag"), 0, 1e3), g == null ? 0 : number(g, 0, 1));
+        }
+
+        // ---- typed access with messages ----
+
+        void object(Node n, Set<String> allowed) {
+            if (!n.json.isObject()) throw fail(n.path, "must be an object, was " + describe(n.json));
+            only(n, allowed);
+        }
+
+        void only(Node n, Set<String> allowed) {
+            for (Iterator<String> it = n.json.fieldNames(); it.hasNext(); ) {
+                String f = it.next();
+                if (!allowed.contains(f))
+                    throw fail(n.child(f), "unknown field; allowed here: " + String.join(", ", new TreeSet<>(allowed)));
+            }
+        }
+
+        Node required(Node n, String name) {
+            JsonNode j = n.json.get(name);
+            if (j == null || j.isNull()) throw fail(n.child(name), "is missing");
+            return new Node(j, n.child(name));
+        }
+
+        Node optional(Node n, String name) {
+            JsonNode j = n.json.get(name);
+            return j == null || j.isNull() ? null : new Node(j, n.child(name));
+        }
+
+        List<Node> array(Node n) {
+            if (!n.json.isArray()) throw fail(n.path, "must be an array, was " + describe(n.json));
+            List<Node> out = new ArrayList<>();
+            for (int i = 0; i < n.json.size(); i++) out.add(new Node(n.json.get(i), n.path + "[" + i + "]"));
+            return out;
+        }
+
+        String string(Node n) {
+            if (!n.json.isTextual()) throw fail(n.path, "must be a string, was " + describe(n.json));
+            return n.json.asText();
+        }
+
+        boolean bool(Node n) {
+            if (!n.json.isBoolean()) throw fail(n.path, "must be true or false, was " + describe(n.json));
+            return n.json.asBoolean();
+        }
+
+        double number(Node n, double lo, double hi) {
+            if (!n.json.isNumber()) throw fail(n.path, "must be a number, was " + describe(n.json));
+            double v = n.json.asDouble();
+            if (!Double.isFinite(v) || v < lo || v > hi) throw fail(n.path, "must be in [" + fmt(lo) + ", " + fmt(hi) + "], was " + n.json.asText());
+            return v;
+        }
+
+        int integer(Node n, int lo, int hi) {
+            if (!n.json.isIntegralNumber() || !n.json.canConvertToInt()) throw fail(n.path, "must be a whole number, was " + describe(n.json));
+            int v = n.json.asInt();
+            if (v < lo || v > hi) throw fail(n.path, "must be in [" + lo + ", " + hi + "], was " + v);
+            return v;
+        }
+
+        double[] vector(Node n) {
+            if (!n.json.isArray() || n.json.size() != 3) throw fail(n.path, "must be [x, y, z], was " + describe(n.json));
+            double[] v = new double[3];
+            for (int i = 0; i < 3; i++) v[i] = number(new Node(n.json.get(i), n.path + "[" + i + "]"), -1e6, 1e6);
+            return v;
+        }
+
+        <E extends Enum<E>> E choice(Node n, Class<E> type) {
+            String s = string(n);
+            for (E e : type.getEnumConstants()) if (e.name().equalsIgnoreCase(s)) return e;
+            String[] names = Arrays.stream(type.getEnumConstants()).map(e -> e.name().toLowerCase(Locale.ROOT)).toArray(String[]::new);
+            throw fail(n.path, "must be one of " + String.join(", ", names) + ", was \"" + s + "\"");
+        }
+
+        static String fmt(double v) {
+            return v == Math.rint(v) && Math.abs(v) < 1e15 ? String.valueOf((long) v) : String.valueOf(v);
+        }
+
+        static String describe(JsonNode j) {
+            if (j.isTextual()) return "string \"" + j.asText() + "\"";
+            if (j.isNumber()) return "number " + j.asText();
+            if (j.isBoolean()) return "boolean " + j.asText();
+            if (j.isArray()) return "an array of " + j.size();
+            if (j.isObject()) return "an object";
+            return j.getNodeType().toString().toLowerCase(Locale.ROOT);
+        }
+    }
+}

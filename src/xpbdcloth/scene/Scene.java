@@ -1,0 +1,107 @@
+package xpbdcloth.scene;
+
+import xpbdcloth.engine.Cloth;
+import xpbdcloth.engine.ClothBuilder;
+import xpbdcloth.engine.ConstraintFamily;
+import xpbdcloth.engine.SolverSettings;
+import xpbdcloth.engine.Simulation;
+import xpbdcloth.engine.Sphere;
+import xpbdcloth.engine.SpherePath;
+import xpbdcloth.engine.Wind;
+
+/**
+ * A running scene: the cloth, simulation, spheres, scripted pins and wind that a {@link Preset}
+ * describes. Building a scene validates everything first and touches nothing that already runs, so a
+ * scene that fails to build leaves the caller's current scene as it was.
+ */
+public final class Scene {
+    private final Preset preset;
+    private final Cloth cloth;
+    private final Simulation simulation;
+    private final Wind wind;
+    private final double scriptEnd;
+    private boolean windOn;
+
+    private Scene(Preset preset) {
+        this.preset = preset;
+        Preset.Cloth c = preset.cloth;
+        ClothBuilder b = new ClothBuilder().resolution(c.columns, c.rows).size(c.width, c.height).plane(c.plane)
+                .origin(c.origin[0], c.origin[1], c.origin[2]).withoutFamily(ConstraintFamily.STRUCTURAL);
+        if (Double.isNaN(c.totalMass)) b.arealDensity(c.arealDensity);
+        else b.totalMass(c.totalMass);
+        preset.families.forEach((family, m) -> b.family(family, m.stiffness, m.compliance));
+        for (int[] pin : c.pins) b.pin(pin[0], pin[1]);
+        cloth = b.build();
+
+        Preset.Solver s = preset.solver;
+        SolverSettings settings = new SolverSettings().mode(s.mode).iterations(s.iterations).substeps(s.substeps)
+                .timestep(s.dt).mullerCorrection(s.mullerCorrection).gravity(s.gravity[0], s.gravity[1], s.gravity[2]);
+        simulation = cloth.simulation(settings);
+
+        for (Preset.SphereSpec sp : preset.spheres) {
+            Sphere sphere = new Sphere(path(sp), sp.radius, sp.margin, sp.staticFriction, sp.kineticFriction)
+                    .spin(sp.angularVelocity[0], sp.angularVelocity[1], sp.angularVelocity[2]);
+            simulation.add(sphere);
+        }
+
+        int n = preset.pinMotions.size();
+        double end = 0;
+        if (n > 0) {
+            int[] ids = new int[n];
+            double[][] d = new double[n][];
+            double[] start = new double[n], duration = new double[n];
+            for (int j = 0; j < n; j++) {
+                Preset.PinMotion m = preset.pinMotions.get(j);
+                ids[j] = cloth.index(m.row, m.col);
+                d[j] = m.displacement;
+                start[j] = m.start;
+                duration[j] = m.duration;
+            }
+            PinScript script = new PinScript(cloth.particles(), ids, d, start, duration);
+            simulation.add(script);
+            end = script.endTime();
+        }
+        scriptEnd = end;
+
+        Preset.WindSpec w = preset.wind;
+        wind = w == null
+                ? new Wind(cloth.triangles(), 2, 0, 1.5, 0.5, 0.3)
+                : new Wind(cloth.triangles(), w.velocity[0], w.velocity[1], w.velocity[2], w.drag, w.gust);
+        setWind(w != null);
+    }
+
+    /** Builds a fresh scene from a preset (the preset is already validated). */
+    public static Scene of(Preset preset) {
+        if (preset == null) throw new IllegalArgumentException("preset must not be null, was null");
+        return new Scene(preset);
+    }
+
+    /** A built-in scene by name. */
+    public static Scene builtIn(String name) { return of(PresetLoader.builtIn(name)); }
+
+    static SpherePath path(Preset.SphereSpec s) {
+        double[] c = s.centre, v = s.vector;
+        switch (s.path) {
+            case "linear": return SpherePath.linear(c[0], c[1], c[2], v[0], v[1], v[2]);
+            case "circle": return SpherePath.circle(c[0], c[1], c[2], s.pathRadius, s.rate);
+            case "oscillation": return SpherePath.oscillation(c[0], c[1], c[2], v[0], v[1], v[2], s.rate);
+            default: return SpherePath.fixed(c[0], c[1], c[2]);
+        }
+    }
+
+    public Preset preset() { return preset; }
+    public Cloth cloth() { return cloth; }
+    public Simulation simulation() { return simulation; }
+    public Wind wind() { return wind; }
+    public boolean windOn() { return windOn; }
+
+    /** Time (s) after which the scripted pins hold still; 0 if none move. */
+    public double scriptEnd() { return scriptEnd; }
+
+    public void setWind(boolean on) {
+        if (on == windOn) return;
+        if (on) simulation.add(wind);
+        else simulation.remove(wind);
+        windOn = on;
+    }
+}

@@ -1,0 +1,80 @@
+package xpbdcloth.scene;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+/** Broken presets: each kind of mistake gets a message naming the file, the field and the problem. */
+class PresetLoaderTest {
+
+    static String valid() {
+        return "{ \"name\": \"t\", \"cloth\": { \"columns\": 4, \"rows\": 4, \"width\": 1, \"height\": 1, \"arealDensity\": 0.2, \"pins\": [\"top-left\"] },"
+                + " \"families\": { \"structural\": { \"stiffness\": 1, \"compliance\": 0 } },"
+                + " \"solver\": { \"mode\": \"XPBD\", \"iterations\": 2, \"dt\": 0.02 } }";
+    }
+
+    @Test
+    void validTextLoads() {
+        Preset p = PresetLoader.parse("t.json", valid());
+        assertEquals(4, p.cloth.columns);
+        assertEquals(1, p.solver.substeps, "default substeps");
+        assertEquals(-9.81, p.solver.gravity[1], "default gravity");
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @CsvSource(delimiter = '|', value = {
+        "truncated            | \"dt\": 0.02 } }                    | \"dt\": 0.02                     | (syntax)             | not valid JSON",
+        "wrong type           | \"columns\": 4                      | \"columns\": \"four\"              | cloth.columns        | must be a whole number, was string \"four\"",
+        "unknown key          | \"iterations\": 2                   | \"iterations\": 2, \"iters\": 3     | solver.iters         | unknown field",
+        "negative size        | \"width\": 1                        | \"width\": -1                    | cloth.width          | must be in [0, 100], was -1",
+        "NaN as string        | \"dt\": 0.02                        | \"dt\": \"NaN\"                    | solver.dt            | must be a number, was string \"NaN\"",
+        "pin outside grid     | \"pins\": [\"top-left\"]              | \"pins\": [[9, 0]]                | cloth.pins[0]        | outside the 4x4 grid",
+        "stiffness over 1     | \"stiffness\": 1                    | \"stiffness\": 1.5               | families.structural.stiffness | must be in [0, 1], was 1.5",
+        "negative compliance  | \"compliance\": 0                   | \"compliance\": -1e-6            | families.structural.compliance | must be in [0, 1000000], was -1.0E-6",
+        "missing field        | \"name\": \"t\",                      | ''                               | name                 | is missing",
+        "zero iterations      | \"iterations\": 2                   | \"iterations\": 0                | solver.iterations    | must be in [1, 1000], was 0",
+        "bad mode             | \"mode\": \"XPBD\"                    | \"mode\": \"FEM\"                  | solver.mode          | must be one of pbd, xpbd, was \"FEM\"",
+        "both masses          | \"arealDensity\": 0.2               | \"arealDensity\": 0.2, \"totalMass\": 1 | cloth             | needs exactly one of arealDensity",
+        "dt zero              | \"dt\": 0.02                        | \"dt\": 0                        | solver.dt            | must be > 0, was 0",
+        "duplicate key        | \"rows\": 4                         | \"rows\": 4, \"rows\": 5           | (syntax)             | Duplicate field",
+    })
+    void brokenPresetNamesFieldAndProblem(String kind, String from, String to, String field, String problem) {
+        String text = valid().replace(from.trim(), to.trim());
+        assertNotEquals(valid(), text, "the case edits the text: " + kind);
+        PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse("bad.json", text));
+        assertEquals("bad.json", e.file());
+        assertEquals(field.trim(), e.field(), kind + ": " + e.getMessage());
+        assertTrue(e.problem().contains(problem.trim()), kind + ": " + e.getMessage());
+    }
+
+    @Test
+    void emptyFileAndDirectoryAndMissingFile(@TempDir Path dir) throws IOException {
+        Path empty = Files.writeString(dir.resolve("empty.json"), "  \n");
+        PresetException e = assertThrows(PresetException.class, () -> PresetLoader.load(empty));
+        assertEquals("is empty", e.problem());
+        assertTrue(e.getMessage().startsWith(empty.toString() + ": (file): "));
+        e = assertThrows(PresetException.class, () -> PresetLoader.load(dir));
+        assertEquals("is a directory, not a preset file", e.problem());
+        e = assertThrows(PresetException.class, () -> PresetLoader.load(dir.resolve("nope.json")));
+        assertEquals("does not exist", e.problem());
+        e = assertThrows(PresetException.class, () -> PresetLoader.byNameOrPath("curtain"));
+        assertEquals("does not exist", e.problem());
+    }
+
+    @Test
+    void everyFileInDataLoads() throws IOException {
+        try (var files = Files.list(Path.of("data"))) {
+            long n = files.filter(f -> f.toString().endsWith(".json")).peek(f -> {
+                Preset p = PresetLoader.load(f);
+                assertEquals(f.getFileName().toString().replace(".json", ""), p.name, "file name matches preset name");
+            }).count();
+            assertEquals(PresetLoader.BUILT_IN.size(), n, "every preset in data/ is built in");
+        }
+    }
+}
