@@ -4,9 +4,10 @@ import xpbdcloth.engine.Kinematics;
 import xpbdcloth.engine.Particles;
 
 /**
- * Moves pinned particles by a displacement over a time window with smoothstep easing, then holds them:
- * x(t) = x₀ + d·s(u), u = clamp((t − start)/duration), s(u) = u²(3 − 2u). Smoothstep starts and ends with
- * zero velocity, so the pins themselves never jerk the cloth (the seed's "opening the corners").
+ * Moves pinned particles by displacements over time windows with smoothstep easing, then holds them:
+ * x(t) = x₀ + Σⱼ dⱼ·s(uⱼ), uⱼ = clamp((t − startⱼ)/durationⱼ), s(u) = u²(3 − 2u), summed over the motions
+ * of that particle, so a pin can move in, wait and move out. Smoothstep starts and ends with zero
+ * velocity, so the pins never jerk the cloth (the seed's "opening the corners").
  */
 final class PinScript implements Kinematics {
     private final int[] particles;
@@ -28,11 +29,23 @@ final class PinScript implements Kinematics {
 
     @Override public void apply(Particles p, double t) {
         for (int j = 0; j < particles.length; j++) {
-            double u = Math.max(0, Math.min(1, (t - start[j]) / duration[j]));
-            double s = u * u * (3 - 2 * u);
-            p.moveKinematic(particles[j], base[3 * j] + s * displacement[3 * j],
-                    base[3 * j + 1] + s * displacement[3 * j + 1], base[3 * j + 2] + s * displacement[3 * j + 2]);
+            if (firstMotionOf(j) != j) continue; // handled with the particle's first motion
+            double px = base[3 * j], py = base[3 * j + 1], pz = base[3 * j + 2];
+            for (int k = j; k < particles.length; k++) {
+                if (particles[k] != particles[j]) continue;
+                double u = Math.max(0, Math.min(1, (t - start[k]) / duration[k]));
+                double s = u * u * (3 - 2 * u);
+                px += s * displacement[3 * k];
+                py += s * displacement[3 * k + 1];
+                pz += s * displacement[3 * k + 2];
+            }
+            p.moveKinematic(particles[j], px, py, pz);
         }
+    }
+
+    private int firstMotionOf(int j) {
+        for (int k = 0; k < j; k++) if (particles[k] == particles[j]) return k;
+        return j;
     }
 
     /** The time after which every pin holds still. */

@@ -1,7 +1,112 @@
 package xpbdcloth.tools;
 
-public final class Main {
+import java.io.File;
+import java.util.concurrent.Callable;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import xpbdcloth.scene.PresetLoader;
+import xpbdcloth.sketch.ClothApp;
+import xpbdcloth.sketch.Launcher;
+
+/** The command line: opens the sketch, records frames, runs the benchmark. */
+@Command(name = "xpbd-cloth", mixinStandardHelpOptions = true, version = "xpbd-cloth 0.1.0",
+        description = "Real-time PBD/XPBD cloth. With no command, opens the sketch.",
+        subcommands = {Main.Record.class, Main.BenchCommand.class})
+public final class Main implements Callable<Integer> {
+    @Option(names = "--scene", description = "built-in scene (${COMPLETION-CANDIDATES}) or a preset file", defaultValue = "hanging",
+            completionCandidates = Scenes.class)
+    String scene;
+
+    @Option(names = "--side-by-side", description = "start with PBD left and XPBD right")
+    boolean sideBySide;
+
+    @Option(names = "--size", description = "window size WxH in pixels", defaultValue = "1280x800")
+    String size;
+
+    static final class Scenes extends java.util.ArrayList<String> {
+        Scenes() { super(PresetLoader.BUILT_IN); }
+    }
+
     public static void main(String[] args) {
-        System.out.println("xpbd-cloth");
+        int code = new CommandLine(new Main()).execute(args);
+        // An open sketch keeps running on Processing's threads and exits when its window closes.
+        if (!Launcher.opened()) System.exit(code);
+    }
+
+    @Override public Integer call() {
+        if (!displayAvailable("xpbd-cloth --scene " + scene)) return 2;
+        PresetLoader.byNameOrPath(scene); // a bad name or file fails here, with its message
+        int[] wh = parseSize(size);
+        Launcher.open(scene, sideBySide, null, wh[0], wh[1]);
+        return 0;
+    }
+
+    static int[] parseSize(String s) {
+        String[] p = s.toLowerCase().split("x");
+        try {
+            int w = Integer.parseInt(p[0].trim()), h = Integer.parseInt(p[1].trim());
+            if (w < 200 || h < 150) throw new NumberFormatException();
+            return new int[] {w, h};
+        } catch (RuntimeException e) {
+            throw new IllegalArgumentException("size must be WxH with W >= 200 and H >= 150, was " + s);
+        }
+    }
+
+    /** True if a window can open; otherwise says how to run under Xvfb instead of a stack trace. */
+    static boolean displayAvailable(String commandLine) {
+        String os = System.getProperty("os.name", "").toLowerCase();
+        boolean linux = os.contains("linux") || os.contains("bsd");
+        String display = System.getenv("DISPLAY");
+        if (linux && (display == null || display.isEmpty()) && System.getenv("WAYLAND_DISPLAY") == null) {
+            System.err.println("xpbd-cloth: no display (DISPLAY is not set), so no window can open.");
+            System.err.println("Run it under a virtual display instead:");
+            System.err.println("  sudo apt-get install -y xvfb libgl1-mesa-dri   # once");
+            System.err.println("  xvfb-run -a -s '-screen 0 1600x1000x24' build/install/xpbd-cloth/bin/" + commandLine);
+            return false;
+        }
+        return true;
+    }
+
+    @Command(name = "record", mixinStandardHelpOptions = true,
+            description = "Renders a scene through the real P3D sketch at a fixed timestep and writes PNG frames.")
+    static final class Record implements Callable<Integer> {
+        @Option(names = "--scene", description = "built-in scene or preset file", defaultValue = "hanging")
+        String scene;
+
+        @Option(names = "--frames", description = "number of frames (one 60 Hz frame each)", defaultValue = "120")
+        int frames;
+
+        @Option(names = "--out", description = "folder for frame-0001.png, ... (default build/frames/<scene>)")
+        File out;
+
+        @Option(names = "--side-by-side", description = "record PBD left and XPBD right")
+        boolean sideBySide;
+
+        @Option(names = "--size", description = "frame size WxH in pixels", defaultValue = "1280x720")
+        String size;
+
+        @Override public Integer call() {
+            if (frames < 1) throw new IllegalArgumentException("frames must be >= 1, was " + frames);
+            if (!displayAvailable("xpbd-cloth record --scene " + scene + " --frames " + frames)) return 2;
+            PresetLoader.byNameOrPath(scene);
+            String name = new File(scene).getName().replace(".json", "");
+            File folder = out != null ? out : new File("build/frames/" + name + (sideBySide ? "-side-by-side" : ""));
+            int[] wh = parseSize(size);
+            System.out.println("recording " + frames + " frames of " + scene + " into " + folder);
+            Launcher.open(scene, sideBySide, new ClothApp.Recording(folder, frames), wh[0], wh[1]);
+            return 0;
+        }
+    }
+
+    @Command(name = "bench", mixinStandardHelpOptions = true, description = "The engine benchmark (CSV on stdout).")
+    static final class BenchCommand implements Callable<Integer> {
+        @Option(names = "--full", description = "also the peer workloads, all families, N = 256 and the parallel solve")
+        boolean full;
+
+        @Override public Integer call() {
+            Bench.main(full ? new String[] {"--full"} : new String[0]);
+            return 0;
+        }
     }
 }

@@ -42,14 +42,15 @@ class ScenesTest {
             }
             System.out.printf("sphere-pass %s: deepest penetration after a step %.2e m%n", mode, worst);
             assertTrue(worst < 1e-4, mode + ": penetration " + worst);
-            assertTrue(sphere.centreZ() > 0.6, "the sphere went through the cloth's plane");
+            assertTrue(sphere.centreZ() < -0.6, "the sphere went through the cloth's plane, z = " + sphere.centreZ());
         }
     }
 
     /**
-     * corners: the pins open over [1 s, 4 s] and then hold. Over 12 s: no NaN, no structural edge
-     * stretched by more than 100 % (the worst ones sit at the pinned corners, where one particle
-     * carries the pull), and after the pins stop the kinetic energy decays: the peak in each 2 s
+     * corners: the pins close in over [0, 0.4 s], open over [1 s, 4 s] until the cloth is taut at its full
+     * size, and hold. Over 12 s: no NaN, no structural edge stretched by more than 50 % (the worst
+     * sit at the pinned corners, where one particle carries the pull of a taut sheet and Gauss–Seidel
+     * converges slowest), and after the pins stop the kinetic energy decays: the peak in each 2 s
      * window after 4 s is below the one before, and the last is under 10 % of the first.
      */
     @Test
@@ -70,7 +71,7 @@ class ScenesTest {
                 if (w >= 0 && w < 4) windowPeak[w] = Math.max(windowPeak[w], Metrics.kineticEnergy(sim.particles()));
             }
             System.out.printf("corners %s: max strain %.3f, KE peaks after stop %s%n", mode, maxStrain, java.util.Arrays.toString(windowPeak));
-            assertTrue(maxStrain < 1.0, mode + ": max strain " + maxStrain);
+            assertTrue(maxStrain < 0.5, mode + ": max strain " + maxStrain);
             for (int w = 1; w < 4; w++) assertTrue(windowPeak[w] < windowPeak[w - 1], mode + ": KE decays, window " + w);
             assertTrue(windowPeak[3] < 0.1 * windowPeak[0], mode + ": KE falls below 10% of its first peak");
         }

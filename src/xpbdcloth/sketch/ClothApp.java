@@ -1,0 +1,237 @@
+package xpbdcloth.sketch;
+
+import java.io.File;
+import java.nio.file.Path;
+import java.util.List;
+import processing.core.PApplet;
+import processing.core.PConstants;
+import processing.core.PGraphics;
+import processing.event.KeyEvent;
+import processing.event.MouseEvent;
+import xpbdcloth.engine.AttachmentConstraint;
+import xpbdcloth.engine.Particles;
+import xpbdcloth.engine.Sphere;
+import xpbdcloth.scene.Preset;
+import xpbdcloth.scene.PresetLoader;
+import xpbdcloth.scene.Scene;
+
+/**
+ * The sketch: hooks itself into any PApplet (the Processing IDE's .pde or the launcher) through
+ * {@code registerMethod}, like a Processing library, so the .pde stays three lines long.
+ *
+ * <p>Interactive runs step the simulation in real time with an accumulator (a frame runs as many steps
+ * of dt as the wall clock asks for, at most 8), which is what makes the frame-rate trap reproducible:
+ * dt = 1/120 s means two PBD steps per 60 Hz frame. Recording runs a fixed number of steps per frame,
+ * so frames are deterministic.
+ */
+public final class ClothApp {
+    /** Where and how long to record; null for an interactive session. */
+    public static final class Recording {
+        final File folder;
+        final int frames;
+
+        public Recording(File folder, int frames) {
+            if (frames < 1) throw new IllegalArgumentException("frames must be >= 1, was " + frames);
+            this.folder = folder;
+            this.frames = frames;
+        }
+    }
+
+    static final int MAX_STEPS_PER_FRAME = 8;
+    static final double GRAB_PIXELS = 30;
+
+    private final PApplet app;
+    private final SketchState state;
+    private final OrbitCamera camera;
+    private final ClothRenderer renderer = new ClothRenderer();
+    private final Hud hud = new Hud();
+    private final Recording recording;
+    private int recorded;
+    private double accumulator;
+    private long lastNanos;
+    private double simMs, renderMs;
+    private Preset framedPreset;
+    private boolean framedSideBySide;
+
+    // Grab: the attachments (one per running scene, same particle) and the depth plane point.
+    private AttachmentConstraint[] grabs;
+    private final double[] grabPoint = new double[3], scratch = new double[3];
+    /** Where the grabbed particle was in each running scene when grabbed. */
+    private final double[][] grabStarts = new double[2][3];
+
+    public ClothApp(PApplet app) { this(app, "hanging", false, null); }
+
+    public ClothApp(PApplet app, String sceneNameOrPath, boolean sideBySide, Recording recording) {
+        this.app = app;
+        this.recording = recording;
+        state = new SketchState(PresetLoader.byNameOrPath(sceneNameOrPath));
+        if (sideBySide) state.toggleSideBySide();
+        if (recording != null) {
+            state.showHelp = false;
+            recording.folder.mkdirs();
+        }
+        camera = new OrbitCamera(0, 1, 0, 3, 0.3, 30).attach(app);
+        camera.ignoreWhen(e -> e.isControlDown() || grabs != null);
+        frame();
+        app.textFont(app.createFont("DejaVu Sans Mono", 13, true));
+        app.registerMethod("draw", this);
+        app.registerMethod("keyEvent", this);
+        app.registerMethod("mouseEvent", this);
+        lastNanos = System.nanoTime();
+    }
+
+    public SketchState state() { return state; }
+
+    /** Centres the camera on the scene (or the pair) when the scene or the layout changes. */
+    private void frame() {
+        framedPreset = state.preset();
+        framedSideBySide = state.sideBySide();
+        Preset.Cloth c = framedPreset.cloth;
+        double size = Math.max(Math.max(c.width, c.height), 0.6);
+        double cy = c.plane == xpbdcloth.engine.ClothBuilder.Plane.VERTICAL ? c.origin[1] - 0.5 * c.height : c.origin[1] - 0.3 * size;
+        double distance = size * (framedSideBySide ? 2.6 : 1.5) + 0.4;
+        camera.setStartView(c.origin[0], cy, c.origin[2], distance);
+    }
+
+    /** World offset along x of running scene i: the pair stands side by side, PBD on the left. */
+    double offsetX(int i) {
+        if (!state.sideBySide()) return 0;
+        Preset.Cloth c = state.preset().cloth;
+        double gap = Math.max(c.width, 0.6) * 0.65 + 0.15;
+        for (Preset.SphereSpec s : state.preset().spheres) gap = Math.max(gap, s.radius * 2.2);
+        return i == 0 ? -gap : gap;
+    }
+
+    public void draw() {
+        long now = System.nanoTime();
+        double frameSeconds = Math.min(0.25, (now - lastNanos) / 1e9);
+        lastNanos = now;
+        long t0 = System.nanoTime();
+        int steps = stepsThisFrame(frameSeconds);
+        for (int i = 0; i < steps; i++) {
+            if (!state.advance()) break;
+            hud.record(state.running());
+        }
+        long t1 = System.nanoTime();
+        if (steps > 0) simMs = 0.9 * simMs + 0.1 * ((t1 - t0) / 1e6 / steps);
+        if (state.preset() != framedPreset || state.sideBySide() != framedSideBySide) {
+            frame();
+            hud.clear();
+        }
+        if (state.loadRequested) {
+            state.loadRequested = false;
+            app.selectInput("Load a scene preset (JSON)", "presetSelected", null, this);
+        }
+
+        PGraphics g = app.g;
+        g.background(34, 36, 42);
+        camera.update(app.millis() / 1000.0);
+        camera.apply(g);
+        g.ambientLight(78, 80, 88);
+        // World directions (y up): a key light from above, front and left, and a dim fill from behind.
+        g.directionalLight(200, 197, 190, 0.35f, -0.55f, -0.75f);
+        g.directionalLight(55, 58, 66, -0.4f, 0.3f, 0.8f);
+        camera.eye(scratch);
+        if (state.showGrid) renderer.drawGround(g, 0);
+        List<Scene> running = state.running();
+        for (int i = 0; i < running.size(); i++) {
+            Scene sc = running.get(i);
+            double ox = offsetX(i);
+            g.pushMatrix();
+            g.translate((float) ox, 0, 0);
+            if (state.wireframe) renderer.drawWireframe(g, sc);
+            else if (sc.cloth().triangles().length == 0) renderer.drawRope(g, sc.cloth());
+            else renderer.drawMesh(g, sc.cloth(), scratch[0] - ox, scratch[1], scratch[2]);
+            renderer.drawParticles(g, sc.cloth().particles(), state.showParticles);
+            if (state.showSpheres) for (Sphere s : sc.simulation().spheres()) renderer.drawSphere(g, s);
+            g.popMatrix();
+        }
+        OrbitCamera.beginHud(g);
+        hud.draw(g, state, simMs, renderMs, app.frameRate);
+        OrbitCamera.endHud(g);
+        renderMs = 0.9 * renderMs + 0.1 * ((System.nanoTime() - t1) / 1e6);
+
+        if (recording != null) {
+            app.saveFrame(new File(recording.folder, String.format("frame-%04d.png", ++recorded)).getPath());
+            if (recorded >= recording.frames) app.exit();
+        }
+    }
+
+    /** Real time with an accumulator when interactive; a fixed count (60 Hz frames) when recording. */
+    private int stepsThisFrame(double frameSeconds) {
+        double dt = state.dt();
+        if (recording != null) return Math.max(1, (int) Math.round((1 / 60.0) / dt));
+        accumulator += frameSeconds;
+        int steps = (int) Math.floor(accumulator / dt);
+        accumulator -= steps * dt;
+        if (steps > MAX_STEPS_PER_FRAME) { steps = MAX_STEPS_PER_FRAME; accumulator = 0; }
+        if (state.paused) accumulator = 0;
+        return state.paused ? (state.pendingSteps > 0 ? 1 : 0) : steps;
+    }
+
+    /** File chooser callback ('l'); a broken file keeps the current scene and shows why. */
+    public void presetSelected(File file) {
+        if (file != null) state.load(Path.of(file.getPath()));
+    }
+
+    public void keyEvent(KeyEvent e) {
+        if (e.getAction() != KeyEvent.PRESS || e.getKey() == PConstants.CODED) return;
+        KeyBinding b = KeyBindings.forKey(e.getKey());
+        if (b != null) b.press(state);
+        if (e.getKey() == PConstants.ESC) app.key = 0; // keep Esc from closing the sketch by accident
+    }
+
+    public void mouseEvent(MouseEvent e) {
+        int action = e.getAction();
+        if (action == MouseEvent.PRESS && e.getButton() == PConstants.LEFT && e.isControlDown()) grab(e.getX(), e.getY());
+        else if (action == MouseEvent.DRAG && grabs != null) drag(e.getX(), e.getY());
+        else if (action == MouseEvent.RELEASE && grabs != null) release();
+    }
+
+    /** Picks the particle nearest the pointer on screen (within 30 px) and holds it in every running scene. */
+    private void grab(int mx, int my) {
+        List<Scene> running = state.running();
+        camera.setViewport(app.width, app.height);
+        int best = -1;
+        double bestD2 = GRAB_PIXELS * GRAB_PIXELS;
+        int bestScene = 0;
+        for (int s = 0; s < running.size(); s++) {
+            Particles p = running.get(s).cloth().particles();
+            double ox = offsetX(s);
+            for (int i = 0; i < p.count(); i++) {
+                camera.project(p.x(i) + ox, p.y(i), p.z(i), scratch);
+                if (scratch[2] <= 0) continue;
+                double d2 = (scratch[0] - mx) * (scratch[0] - mx) + (scratch[1] - my) * (scratch[1] - my);
+                if (d2 < bestD2) { bestD2 = d2; best = i; bestScene = s; }
+            }
+        }
+        if (best < 0) return;
+        Particles p = running.get(bestScene).cloth().particles();
+        grabPoint[0] = p.x(best) + offsetX(bestScene);
+        grabPoint[1] = p.y(best);
+        grabPoint[2] = p.z(best);
+        grabs = new AttachmentConstraint[running.size()];
+        for (int s = 0; s < running.size(); s++) {
+            Particles q = running.get(s).cloth().particles();
+            grabStarts[s][0] = q.x(best);
+            grabStarts[s][1] = q.y(best);
+            grabStarts[s][2] = q.z(best);
+            grabs[s] = running.get(s).simulation().attach(best, q.x(best), q.y(best), q.z(best));
+        }
+    }
+
+    private void drag(int mx, int my) {
+        camera.unprojectOnViewPlane(mx, my, grabPoint[0], grabPoint[1], grabPoint[2], scratch);
+        double dx = scratch[0] - grabPoint[0], dy = scratch[1] - grabPoint[1], dz = scratch[2] - grabPoint[2];
+        List<Scene> running = state.running();
+        // Each scene's particle follows the same displacement from where it was grabbed.
+        for (int s = 0; s < grabs.length && s < running.size(); s++)
+            grabs[s].moveTarget(grabStarts[s][0] + dx, grabStarts[s][1] + dy, grabStarts[s][2] + dz);
+    }
+
+    private void release() {
+        List<Scene> running = state.running();
+        for (int s = 0; s < grabs.length && s < running.size(); s++) running.get(s).simulation().release(grabs[s]);
+        grabs = null;
+    }
+}

@@ -1,0 +1,173 @@
+package xpbdcloth.sketch;
+
+import processing.core.PConstants;
+import processing.core.PGraphics;
+import xpbdcloth.engine.Cloth;
+import xpbdcloth.engine.Constraint;
+import xpbdcloth.engine.DistanceConstraint;
+import xpbdcloth.engine.Particles;
+import xpbdcloth.engine.Sphere;
+import xpbdcloth.scene.Scene;
+
+/**
+ * Draws scenes in world coordinates (after {@link OrbitCamera#apply}): the cloth as a lit, smooth-shaded
+ * two-sided triangle mesh, or as a wireframe coloured by strain; particles, spheres with a spin marking,
+ * and a ground grid. Normals are recomputed each frame into arrays kept between frames, so drawing
+ * allocates nothing per vertex.
+ */
+final class ClothRenderer {
+    /** Front and back colours of the cloth (RGB). */
+    static final int[] FRONT = {88, 148, 222}, BACK = {236, 172, 92};
+    /** Strain at which the wireframe is fully red (stretched) or blue (compressed). */
+    static final double FULL_COLOUR_STRAIN = 0.05;
+
+    private double[] normals = new double[0];
+
+    /** Area-weighted vertex normals: the sum of the unnormalised normals of the adjacent triangles. */
+    private void computeNormals(Cloth cloth) {
+        Particles p = cloth.particles();
+        int n = 3 * p.count();
+        if (normals.length != n) normals = new double[n];
+        java.util.Arrays.fill(normals, 0);
+        double[] x = p.positions();
+        int[] t = cloth.triangles();
+        for (int k = 0; k < t.length; k += 3) {
+            int a = 3 * t[k], b = 3 * t[k + 1], c = 3 * t[k + 2];
+            double e1x = x[b] - x[a], e1y = x[b + 1] - x[a + 1], e1z = x[b + 2] - x[a + 2];
+            double e2x = x[c] - x[a], e2y = x[c + 1] - x[a + 1], e2z = x[c + 2] - x[a + 2];
+            double nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
+            normals[a] += nx; normals[a + 1] += ny; normals[a + 2] += nz;
+            normals[b] += nx; normals[b + 1] += ny; normals[b + 2] += nz;
+            normals[c] += nx; normals[c + 1] += ny; normals[c + 2] += nz;
+        }
+        for (int k = 0; k < n; k += 3) {
+            double l = Math.sqrt(normals[k] * normals[k] + normals[k + 1] * normals[k + 1] + normals[k + 2] * normals[k + 2]);
+            if (l > 0) { normals[k] /= l; normals[k + 1] /= l; normals[k + 2] /= l; }
+        }
+    }
+
+    /**
+     * The mesh, lit on both sides: each triangle whose face turns away from the eye is drawn with its
+     * normals flipped and the back colour, so the lighting is right on the side the viewer sees.
+     */
+    void drawMesh(PGraphics g, Cloth cloth, double eyeX, double eyeY, double eyeZ) {
+        computeNormals(cloth);
+        double[] x = cloth.particles().positions();
+        int[] t = cloth.triangles();
+        g.noStroke();
+        g.beginShape(PConstants.TRIANGLES);
+        for (int k = 0; k < t.length; k += 3) {
+            int a = 3 * t[k], b = 3 * t[k + 1], c = 3 * t[k + 2];
+            double e1x = x[b] - x[a], e1y = x[b + 1] - x[a + 1], e1z = x[b + 2] - x[a + 2];
+            double e2x = x[c] - x[a], e2y = x[c + 1] - x[a + 1], e2z = x[c + 2] - x[a + 2];
+            double nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
+            boolean front = nx * (eyeX - x[a]) + ny * (eyeY - x[a + 1]) + nz * (eyeZ - x[a + 2]) >= 0;
+            float sign = front ? 1 : -1;
+            int[] col = front ? FRONT : BACK;
+            g.fill(col[0], col[1], col[2]);
+            vertex(g, x, a, sign);
+            vertex(g, x, b, sign);
+            vertex(g, x, c, sign);
+        }
+        g.endShape();
+    }
+
+    /** A cloth without triangles (a rope, one particle wide) as a thick polyline through its particles. */
+    void drawRope(PGraphics g, Cloth cloth) {
+        double[] x = cloth.particles().positions();
+        g.noFill();
+        g.stroke(FRONT[0], FRONT[1], FRONT[2]);
+        g.strokeWeight(5);
+        g.beginShape();
+        for (int i = 0; i < cloth.particles().count(); i++) g.vertex((float) x[3 * i], (float) x[3 * i + 1], (float) x[3 * i + 2]);
+        g.endShape();
+    }
+
+    private void vertex(PGraphics g, double[] x, int k, float sign) {
+        g.normal(sign * (float) normals[k], sign * (float) normals[k + 1], sign * (float) normals[k + 2]);
+        g.vertex((float) x[k], (float) x[k + 1], (float) x[k + 2]);
+    }
+
+    /** Distance constraints as lines: white at rest, red stretched, blue compressed. */
+    void drawWireframe(PGraphics g, Scene scene) {
+        Particles p = scene.cloth().particles();
+        double[] x = p.positions();
+        g.strokeWeight(1.5f);
+        g.beginShape(PConstants.LINES);
+        for (Constraint c : scene.simulation().constraints()) {
+            if (!(c instanceof DistanceConstraint)) continue;
+            DistanceConstraint d = (DistanceConstraint) c;
+            double s = Math.max(-1, Math.min(1, d.strain(p) / FULL_COLOUR_STRAIN));
+            if (s >= 0) g.stroke(255, (float) (255 * (1 - s)), (float) (255 * (1 - s)));
+            else g.stroke((float) (255 * (1 + s)), (float) (255 * (1 + s)), 255);
+            int a = 3 * d.a(), b = 3 * d.b();
+            g.vertex((float) x[a], (float) x[a + 1], (float) x[a + 2]);
+            g.vertex((float) x[b], (float) x[b + 1], (float) x[b + 2]);
+        }
+        g.endShape();
+    }
+
+    /** Particles as points, pinned ones larger and orange. */
+    void drawParticles(PGraphics g, Particles p, boolean all) {
+        double[] x = p.positions();
+        if (all) {
+            g.stroke(240);
+            g.strokeWeight(3);
+            g.beginShape(PConstants.POINTS);
+            for (int i = 0; i < p.count(); i++) if (!p.isPinned(i)) g.vertex((float) x[3 * i], (float) x[3 * i + 1], (float) x[3 * i + 2]);
+            g.endShape();
+        }
+        g.stroke(255, 150, 30);
+        g.strokeWeight(9);
+        g.beginShape(PConstants.POINTS);
+        for (int i = 0; i < p.count(); i++) if (p.isPinned(i)) g.vertex((float) x[3 * i], (float) x[3 * i + 1], (float) x[3 * i + 2]);
+        g.endShape();
+    }
+
+    /** A sphere with two great circles turned by its spin angle, so rotation is visible. */
+    void drawSphere(PGraphics g, Sphere s) {
+        g.pushMatrix();
+        g.translate((float) s.centreX(), (float) s.centreY(), (float) s.centreZ());
+        g.noStroke();
+        g.fill(150, 152, 158);
+        g.sphereDetail(40);
+        g.sphere((float) s.radius() * 0.995f);
+        double wl = Math.sqrt(s.omegaX() * s.omegaX() + s.omegaY() * s.omegaY() + s.omegaZ() * s.omegaZ());
+        if (wl > 0) g.rotate((float) s.spinAngle(), (float) (s.omegaX() / wl), (float) (s.omegaY() / wl), (float) (s.omegaZ() / wl));
+        g.noFill();
+        g.strokeWeight(3);
+        float r = (float) s.radius() * 1.004f;
+        g.stroke(220, 60, 60);
+        ring(g, r, 0);
+        g.stroke(250, 220, 80);
+        ring(g, r, 1);
+        g.popMatrix();
+    }
+
+    /** A circle of radius r in the xz plane (plane 0) or the xy plane (plane 1). */
+    private static void ring(PGraphics g, float r, int plane) {
+        g.beginShape();
+        for (int i = 0; i <= 48; i++) {
+            double a = 2 * Math.PI * i / 48;
+            float u = (float) (r * Math.cos(a)), v = (float) (r * Math.sin(a));
+            if (plane == 0) g.vertex(u, 0, v);
+            else g.vertex(u, v, 0);
+        }
+        g.endShape();
+    }
+
+    /** A 4 m square grid on the ground (y = 0), lines every 25 cm. */
+    void drawGround(PGraphics g, double centreX) {
+        g.strokeWeight(1);
+        g.stroke(90, 94, 104);
+        g.beginShape(PConstants.LINES);
+        float half = 2f;
+        float cx = (float) (Math.round(centreX * 4) / 4.0);
+        for (int i = -8; i <= 8; i++) {
+            float u = i * 0.25f;
+            g.vertex(cx + u, 0, -half); g.vertex(cx + u, 0, half);
+            g.vertex(cx - half, 0, u); g.vertex(cx + half, 0, u);
+        }
+        g.endShape();
+    }
+}

@@ -1,0 +1,68 @@
+package xpbdcloth.sketch;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Collections;
+import java.util.List;
+import xpbdcloth.engine.ConstraintFamily;
+
+/**
+ * The one table of keys: the key handler dispatches through it and the help overlay and README list it.
+ * Upper case is the same letter with Shift and goes the other way (down instead of up).
+ */
+public final class KeyBindings {
+    private KeyBindings() {}
+
+    private static final List<KeyBinding> ALL = build();
+
+    public static List<KeyBinding> all() { return ALL; }
+
+    /** The binding for a typed character, or null. */
+    public static KeyBinding forKey(char key) {
+        for (KeyBinding b : ALL) if (b.key == key) return b;
+        return null;
+    }
+
+    private static Object material(SketchState s) {
+        List<Object> out = new ArrayList<>();
+        for (ConstraintFamily f : new ConstraintFamily[] {ConstraintFamily.STRUCTURAL, ConstraintFamily.SHEAR, ConstraintFamily.BEND})
+            out.add(s.material(f) == null ? null : Arrays.toString(s.material(f)));
+        return out;
+    }
+
+    private static List<KeyBinding> build() {
+        List<KeyBinding> b = new ArrayList<>();
+        b.add(new KeyBinding('m', "PBD <-> XPBD for the running scene (no reset)", SketchState::toggleMode, SketchState::mode));
+        b.add(new KeyBinding('c', "Müller's k' correction on/off (PBD)", SketchState::toggleMuller, SketchState::mullerCorrection));
+        b.add(new KeyBinding('i', "iterations +1", s -> s.changeIterations(1), SketchState::iterations));
+        b.add(new KeyBinding('I', "iterations -1", s -> s.changeIterations(-1), SketchState::iterations));
+        b.add(new KeyBinding('u', "substeps +1", s -> s.changeSubsteps(1), SketchState::substeps));
+        b.add(new KeyBinding('U', "substeps -1", s -> s.changeSubsteps(-1), SketchState::substeps));
+        b.add(new KeyBinding('t', "timestep: 1/30, 1/50, 1/60, 1/120 s", SketchState::cycleTimestep, SketchState::dt));
+        b.add(new KeyBinding('f', "family for k/a keys: all, structural, shear, bend", SketchState::cycleFamily, SketchState::family));
+        b.add(new KeyBinding('k', "stiffness k +0.05 (PBD)", s -> s.changeStiffness(1), KeyBindings::material));
+        b.add(new KeyBinding('K', "stiffness k -0.05 (PBD)", s -> s.changeStiffness(-1), KeyBindings::material));
+        b.add(new KeyBinding('a', "compliance alpha x sqrt(10) (XPBD, softer)", s -> s.changeCompliance(1), KeyBindings::material));
+        b.add(new KeyBinding('A', "compliance alpha / sqrt(10) (XPBD, stiffer)", s -> s.changeCompliance(-1), KeyBindings::material));
+        b.add(new KeyBinding('b', "side by side: PBD left, XPBD right", SketchState::toggleSideBySide, SketchState::sideBySide));
+        for (int i = 0; i < 5; i++) {
+            final int scene = i;
+            b.add(new KeyBinding((char) ('1' + i), "scene: " + xpbdcloth.scene.PresetLoader.BUILT_IN.get(i),
+                    s -> s.selectScene(scene), s -> s.preset().name));
+        }
+        b.add(new KeyBinding('r', "reset the scene", SketchState::reset, SketchState::time));
+        b.add(new KeyBinding('l', "load a preset file (a broken one keeps this scene)", s -> s.loadRequested = true, s -> s.loadRequested));
+        b.add(new KeyBinding(' ', "pause / run", SketchState::togglePause, s -> s.paused));
+        b.add(new KeyBinding('n', "single step (pauses)", SketchState::requestStep, s -> s.pendingSteps));
+        b.add(new KeyBinding('w', "wind on/off", SketchState::toggleWind, SketchState::windOn));
+        b.add(new KeyBinding('d', "wind direction +45°", SketchState::rotateWind, SketchState::windAngle));
+        b.add(new KeyBinding('e', "wind speed +0.5 m/s", s -> s.changeWindSpeed(1), SketchState::windSpeed));
+        b.add(new KeyBinding('E', "wind speed -0.5 m/s", s -> s.changeWindSpeed(-1), SketchState::windSpeed));
+        b.add(new KeyBinding('x', "wireframe coloured by strain", s -> s.wireframe = !s.wireframe, s -> s.wireframe));
+        b.add(new KeyBinding('o', "particles (pinned in orange)", s -> s.showParticles = !s.showParticles, s -> s.showParticles));
+        b.add(new KeyBinding('s', "spheres", s -> s.showSpheres = !s.showSpheres, s -> s.showSpheres));
+        b.add(new KeyBinding('g', "ground grid", s -> s.showGrid = !s.showGrid, s -> s.showGrid));
+        b.add(new KeyBinding('h', "this help", s -> s.showHelp = !s.showHelp, s -> s.showHelp));
+        return Collections.unmodifiableList(b);
+    }
+}

@@ -1,0 +1,263 @@
+package xpbdcloth.sketch;
+
+import java.nio.file.Path;
+import java.util.EnumMap;
+import java.util.List;
+import java.util.Map;
+import xpbdcloth.engine.ConstraintFamily;
+import xpbdcloth.engine.ConstraintMode;
+import xpbdcloth.engine.Simulation;
+import xpbdcloth.engine.SolverSettings;
+import xpbdcloth.scene.Preset;
+import xpbdcloth.scene.PresetException;
+import xpbdcloth.scene.PresetLoader;
+import xpbdcloth.scene.Scene;
+
+/**
+ * Everything the sketch's controls change, without Processing: the running scene (or the PBD and XPBD
+ * pair side by side), solver parameters, per-family materials, wind and view toggles. Keys act on this
+ * class through {@link KeyBindings}, so every control can be tested without a window.
+ */
+public final class SketchState {
+    /** The timesteps the 't' key cycles through: 30, 50 (the original's 20 ms), 60 and 120 steps/s. */
+    static final double[] TIMESTEPS = {1 / 30.0, 1 / 50.0, 1 / 60.0, 1 / 120.0};
+    /** Compliance changes by a factor √10 (half a decade) per key press. */
+    static final double COMPLIANCE_FACTOR = Math.sqrt(10);
+    static final double STIFFNESS_STEP = 0.05;
+    static final double MIN_COMPLIANCE = 1e-10, MAX_COMPLIANCE = 1e3;
+    /** The families a material key acts on: null means all three. */
+    static final ConstraintFamily[] FAMILY_CHOICES = {null, ConstraintFamily.STRUCTURAL, ConstraintFamily.SHEAR, ConstraintFamily.BEND};
+
+    private Preset preset;
+    private Scene main, left, right;
+    private boolean sideBySide;
+
+    // Solver parameters shared by every running scene.
+    private ConstraintMode mode;
+    private int iterations, substeps;
+    private double dt;
+    private boolean muller;
+    private final Map<ConstraintFamily, double[]> materials = new EnumMap<>(ConstraintFamily.class);
+    private int familyChoice;
+
+    // Wind: on/off, direction angle about y (rad), speed (m/s).
+    private boolean windOn;
+    private double windAngle, windSpeed;
+
+    // View toggles.
+    boolean paused, wireframe, showParticles, showSpheres = true, showGrid = true, showHelp = true, loadRequested;
+    int pendingSteps;
+
+    private String message = "";
+    private boolean messageIsError;
+
+    public SketchState(Preset preset) {
+        use(preset);
+    }
+
+    /** Switches to a preset's scene with the preset's own parameters (scene select, reset, load). */
+    private void use(Preset p) {
+        Scene fresh = Scene.of(p); // builds or throws before anything here changes
+        preset = p;
+        mode = p.solver.mode;
+        iterations = p.solver.iterations;
+        substeps = p.solver.substeps;
+        dt = p.solver.dt;
+        muller = p.solver.mullerCorrection;
+        materials.clear();
+        p.families.forEach((f, m) -> materials.put(f, new double[] {m.stiffness, m.compliance}));
+        windOn = p.wind != null;
+        double[] u = p.wind == null ? new double[] {2, 0, 1.5} : p.wind.velocity;
+        windAngle = Math.atan2(u[2], u[0]);
+        windSpeed = Math.hypot(u[0], u[2]);
+        main = fresh;
+        left = right = null;
+        if (sideBySide) buildPair();
+        applyAll();
+    }
+
+    private void buildPair() {
+        left = Scene.of(preset);
+        right = Scene.of(preset);
+    }
+
+    /** Pushes the shared parameters into every running scene (modes: the pair is PBD left, XPBD right). */
+    private void applyAll() {
+        for (Scene s : running()) {
+            SolverSettings st = s.simulation().settings();
+            st.iterations(iterations).substeps(substeps).timestep(dt).mullerCorrection(muller);
+            st.mode(s == left ? ConstraintMode.PBD : s == right ? ConstraintMode.XPBD : mode);
+            materials.forEach((f, km) -> {
+                s.simulation().setStiffness(f, km[0]);
+                s.simulation().setCompliance(f, km[1]);
+            });
+            s.setWind(windOn);
+            s.wind().setVelocity(windSpeed * Math.cos(windAngle), 0, windSpeed * Math.sin(windAngle));
+        }
+    }
+
+    /** The scenes being stepped and drawn: one, or PBD and XPBD side by side. */
+    public List<Scene> running() { return sideBySide ? List.of(left, right) : List.of(main); }
+
+    public boolean sideBySide() { return sideBySide; }
+    public Preset preset() { return preset; }
+    public ConstraintMode mode() { return mode; }
+    public int iterations() { return iterations; }
+    public int substeps() { return substeps; }
+    public double dt() { return dt; }
+    public boolean mullerCorrection() { return muller; }
+    public boolean windOn() { return windOn; }
+    public double windSpeed() { return windSpeed; }
+    public double windAngle() { return windAngle; }
+    public String message() { return message; }
+    public boolean messageIsError() { return messageIsError; }
+
+    /** The family the material keys act on, or null for all. */
+    public ConstraintFamily family() { return FAMILY_CHOICES[familyChoice]; }
+
+    /** k and α of a family, or null if the scene does not have it. */
+    public double[] material(ConstraintFamily f) {
+        double[] m = materials.get(f);
+        return m == null ? null : m.clone();
+    }
+
+    /** The family shown in the HUD for material values: the chosen one, or structural for "all". */
+    public ConstraintFamily shownFamily() {
+        ConstraintFamily f = family();
+        return f == null || !materials.containsKey(f) ? ConstraintFamily.STRUCTURAL : f;
+    }
+
+    // ---- the actions the keys call ----
+
+    public void toggleMode() {
+        if (sideBySide) { say("side by side shows both: PBD left, XPBD right"); return; }
+        mode = mode == ConstraintMode.PBD ? ConstraintMode.XPBD : ConstraintMode.PBD;
+        applyAll();
+        say("mode " + mode);
+    }
+
+    public void toggleMuller() {
+        muller = !muller;
+        applyAll();
+        say(muller ? "PBD: Müller's k' = 1-(1-k)^(1/n)" : "PBD: raw k every sweep");
+    }
+
+    public void changeIterations(int delta) {
+        iterations = Math.max(1, Math.min(1000, iterations + delta));
+        applyAll();
+    }
+
+    public void changeSubsteps(int delta) {
+        substeps = Math.max(1, Math.min(100, substeps + delta));
+        applyAll();
+    }
+
+    public void cycleTimestep() {
+        int next = 0;
+        for (int i = 0; i < TIMESTEPS.length; i++) if (Math.abs(TIMESTEPS[i] - dt) < 1e-12) next = (i + 1) % TIMESTEPS.length;
+        dt = TIMESTEPS[next];
+        applyAll();
+        say(String.format("dt = 1/%.0f s", 1 / dt));
+    }
+
+    public void cycleFamily() {
+        familyChoice = (familyChoice + 1) % FAMILY_CHOICES.length;
+        say("keys k/K and a/A act on " + (family() == null ? "all families" : family().name().toLowerCase()));
+    }
+
+    /** PBD stiffness ± 0.05, clamped to [0, 1], for the chosen family or all. */
+    public void changeStiffness(int direction) {
+        forChosen(km -> km[0] = Math.max(0, Math.min(1, Math.round((km[0] + direction * STIFFNESS_STEP) * 1000) / 1000.0)));
+    }
+
+    /** XPBD compliance ×/÷ √10; below 1e-10 m/N it becomes 0 (hard), and up from 0 starts at 1e-10. */
+    public void changeCompliance(int direction) {
+        forChosen(km -> {
+            double a = km[1];
+            if (direction > 0) a = a == 0 ? MIN_COMPLIANCE : Math.min(MAX_COMPLIANCE, a * COMPLIANCE_FACTOR);
+            else a = a / COMPLIANCE_FACTOR < MIN_COMPLIANCE ? 0 : a / COMPLIANCE_FACTOR;
+            km[1] = a;
+        });
+    }
+
+    private void forChosen(java.util.function.Consumer<double[]> change) {
+        ConstraintFamily f = family();
+        for (Map.Entry<ConstraintFamily, double[]> e : materials.entrySet())
+            if (f == null || e.getKey() == f) change.accept(e.getValue());
+        applyAll();
+    }
+
+    public void selectScene(int index) {
+        List<String> names = PresetLoader.BUILT_IN;
+        if (index < 0 || index >= names.size()) return;
+        use(PresetLoader.builtIn(names.get(index)));
+        say("scene " + preset.name);
+    }
+
+    public void reset() {
+        use(preset);
+        say("reset " + preset.name);
+    }
+
+    /**
+     * Loads a preset file. A broken file leaves the running scene exactly as it was and shows the
+     * loader's message (file, field, problem). Returns whether it loaded.
+     */
+    public boolean load(Path file) {
+        try {
+            use(PresetLoader.load(file));
+            say("loaded " + file);
+            return true;
+        } catch (PresetException e) {
+            error(e.getMessage());
+            return false;
+        } catch (IllegalArgumentException e) {
+            error(file + ": " + e.getMessage());
+            return false;
+        }
+    }
+
+    public void toggleSideBySide() {
+        sideBySide = !sideBySide;
+        if (sideBySide) buildPair();
+        else { left = right = null; }
+        applyAll();
+        say(sideBySide ? "side by side: PBD left, XPBD right, same n and dt" : "single scene");
+    }
+
+    public void togglePause() { paused = !paused; }
+
+    public void requestStep() { pendingSteps++; paused = true; }
+
+    public void toggleWind() {
+        windOn = !windOn;
+        applyAll();
+    }
+
+    public void rotateWind() {
+        windAngle = (windAngle + Math.PI / 4) % (2 * Math.PI);
+        applyAll();
+    }
+
+    public void changeWindSpeed(int direction) {
+        windSpeed = Math.max(0, Math.min(20, windSpeed + direction * 0.5));
+        applyAll();
+    }
+
+    /** Advances the running scenes by one step each, unless paused (a requested single step still runs). */
+    public boolean advance() {
+        if (paused && pendingSteps == 0) return false;
+        if (pendingSteps > 0) pendingSteps--;
+        for (Scene s : running()) s.simulation().step();
+        return true;
+    }
+
+    /** Seconds of simulated time of the first running scene. */
+    public double time() { return running().get(0).simulation().time(); }
+
+    public Simulation first() { return running().get(0).simulation(); }
+
+    void say(String m) { message = m; messageIsError = false; }
+
+    void error(String m) { message = m; messageIsError = true; }
+}

@@ -1,0 +1,95 @@
+package xpbdcloth.sketch;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+import java.util.HashSet;
+import java.util.Set;
+import org.junit.jupiter.api.Test;
+import xpbdcloth.engine.ConstraintFamily;
+import xpbdcloth.engine.ConstraintMode;
+import xpbdcloth.scene.PresetLoader;
+
+/** Every key in the one table changes the state it claims; the table drives the help and the handler. */
+class KeyBindingsTest {
+
+    /** A state where every key has room to act: bend family chosen (k = 0.1, α = 1e-2), stepped a little. */
+    static SketchState fresh() {
+        SketchState s = new SketchState(PresetLoader.builtIn("hanging"));
+        s.cycleFamily(); s.cycleFamily(); s.cycleFamily(); // all -> structural -> shear -> bend
+        for (int i = 0; i < 3; i++) s.advance();
+        return s;
+    }
+
+    @Test
+    void everyKeyChangesWhatItClaims() {
+        Set<Character> seen = new HashSet<>();
+        for (KeyBinding b : KeyBindings.all()) {
+            assertTrue(seen.add(b.key), "key '" + b.key + "' is bound once");
+            assertFalse(b.help.isBlank(), "key '" + b.key + "' has help text");
+            SketchState s = fresh();
+            if (b.key == '1') s.selectScene(1); // '1' selects hanging, which is already running
+            Object before = b.observe(s);
+            b.press(s);
+            Object after = b.observe(s);
+            assertNotEquals(before, after, "key '" + b.key + "' (" + b.help + ") changes its state");
+            assertSame(b, KeyBindings.forKey(b.key), "the handler finds the binding");
+        }
+    }
+
+    @Test
+    void modeToggleKeepsTheRunningScene() {
+        SketchState s = fresh();
+        var sim = s.first();
+        double y = sim.particles().y(500);
+        KeyBindings.forKey('m').press(s);
+        assertSame(sim, s.first(), "no reset");
+        assertEquals(y, sim.particles().y(500), 0.0);
+        assertEquals(ConstraintMode.PBD, sim.settings().mode());
+    }
+
+    @Test
+    void timestepCycleCoversTheFrameRateTrap() {
+        SketchState s = fresh();
+        Set<Double> dts = new HashSet<>();
+        for (int i = 0; i < 4; i++) { KeyBindings.forKey('t').press(s); dts.add(s.dt()); assertEquals(s.dt(), s.first().settings().timestep(), 0.0); }
+        assertEquals(Set.of(1 / 30.0, 1 / 50.0, 1 / 60.0, 1 / 120.0), dts);
+    }
+
+    @Test
+    void complianceKeysMoveHalfADecadeAndReachTheSimulation() {
+        SketchState s = fresh();
+        KeyBindings.forKey('a').press(s);
+        assertEquals(1e-2 * Math.sqrt(10), s.material(ConstraintFamily.BEND)[1], 1e-15);
+        for (var c : s.first().constraints())
+            if (c.family() == ConstraintFamily.BEND) assertEquals(1e-2 * Math.sqrt(10), c.compliance(), 1e-15);
+        assertEquals(1e-6, s.material(ConstraintFamily.STRUCTURAL)[1], 0.0, "other families untouched");
+    }
+
+    @Test
+    void sideBySideRunsPbdLeftXpbdRightInLockstep() {
+        SketchState s = fresh();
+        KeyBindings.forKey('b').press(s);
+        assertEquals(2, s.running().size());
+        assertEquals(ConstraintMode.PBD, s.running().get(0).simulation().settings().mode());
+        assertEquals(ConstraintMode.XPBD, s.running().get(1).simulation().settings().mode());
+        KeyBindings.forKey('i').press(s);
+        s.advance();
+        for (var sc : s.running()) {
+            assertEquals(s.iterations(), sc.simulation().settings().iterations());
+            assertEquals(s.first().stepCount(), sc.simulation().stepCount(), "lockstep");
+        }
+    }
+
+    @Test
+    void brokenPresetKeepsTheRunningScene(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir) throws Exception {
+        SketchState s = fresh();
+        var before = s.first();
+        var bad = java.nio.file.Files.writeString(dir.resolve("bad.json"), "{ \"name\": 3 }");
+        assertFalse(s.load(bad));
+        assertSame(before, s.first(), "the same simulation keeps running");
+        assertTrue(s.messageIsError());
+        assertTrue(s.message().contains("bad.json: name: must be a string"), s.message());
+        s.advance();
+        assertEquals(4, before.stepCount());
+    }
+}

@@ -1,0 +1,68 @@
+package xpbdcloth.sketch;
+
+import static org.junit.jupiter.api.Assertions.*;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.awt.image.BufferedImage;
+import java.io.File;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.concurrent.TimeUnit;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+
+/**
+ * Renders each scene through the real P3D sketch, from the installed launcher (the only layout in which
+ * JOGL 2.3.2 finds its natives), and checks the pictures: the cloth's colours cover a sensible share of
+ * the frame and the scene moves between the first and last frame. Needs a display: CI runs the tests
+ * under xvfb-run; without one the test is skipped locally and fails under CI=true.
+ */
+class RecordingSmokeTest {
+    static final int FRAMES = 20;
+
+    @ParameterizedTest
+    @ValueSource(strings = {"hanging", "corners", "sphere-pass", "rope", "spinning-sphere"})
+    void sceneRendersAndMoves(String scene, @org.junit.jupiter.api.io.TempDir Path out) throws Exception {
+        String display = System.getenv("DISPLAY");
+        boolean ci = "true".equals(System.getenv("CI"));
+        if (!ci) assumeTrue(display != null && !display.isEmpty(), "no display: run the tests under xvfb-run");
+        assertNotNull(display, "CI must run the tests under xvfb-run");
+        String install = System.getProperty("xpbd.install", "build/install/xpbd-cloth");
+        Path launcher = Path.of(install, "bin", "xpbd-cloth");
+        assertTrue(Files.isExecutable(launcher), "installed launcher at " + launcher);
+        Process p = new ProcessBuilder(launcher.toString(), "record", "--scene", scene, "--frames", String.valueOf(FRAMES),
+                "--out", out.toString(), "--size", "640x400").redirectErrorStream(true).redirectOutput(out.resolve("log.txt").toFile()).start();
+        assertTrue(p.waitFor(120, TimeUnit.SECONDS), "recording finished within 2 minutes");
+        String log = Files.readString(out.resolve("log.txt"));
+        assertEquals(0, p.exitValue(), "exit code; log:\n" + log);
+        File first = out.resolve("frame-0001.png").toFile(), last = out.resolve(String.format("frame-%04d.png", FRAMES)).toFile();
+        assertTrue(first.isFile() && last.isFile(), "frames written; log:\n" + log);
+        BufferedImage a = ImageIO.read(first), b = ImageIO.read(last);
+        assertEquals(640, b.getWidth());
+        double cloth = clothShare(b);
+        System.out.printf("%s: cloth covers %.1f %% of the last frame, %.2f %% of pixels changed%n", scene, 100 * cloth, 100 * changed(a, b));
+        assertTrue(cloth > 0.002 && cloth < 0.8, scene + ": cloth colour share " + cloth);
+        assertTrue(changed(a, b) > 0.002, scene + ": the picture changes between first and last frame");
+    }
+
+    /** Share of pixels in the cloth's front (blue) or back (orange) hue, shaded by any light level. */
+    static double clothShare(BufferedImage img) {
+        long hits = 0;
+        for (int y = 0; y < img.getHeight(); y++)
+            for (int x = 0; x < img.getWidth(); x++) {
+                int rgb = img.getRGB(x, y), r = (rgb >> 16) & 255, g = (rgb >> 8) & 255, bl = rgb & 255;
+                boolean blue = bl > 60 && bl > r + 40 && bl > g + 10;
+                boolean orange = r > 80 && r > bl + 60 && g > bl + 20;
+                if (blue || orange) hits++;
+            }
+        return hits / (double) (img.getWidth() * img.getHeight());
+    }
+
+    static double changed(BufferedImage a, BufferedImage b) {
+        long n = 0;
+        for (int y = 0; y < a.getHeight(); y++)
+            for (int x = 0; x < a.getWidth(); x++) if (a.getRGB(x, y) != b.getRGB(x, y)) n++;
+        return n / (double) (a.getWidth() * a.getHeight());
+    }
+}
