@@ -88,9 +88,14 @@ public final class ClothApp {
         framedSideBySide = state.sideBySide();
         Preset.Cloth c = framedPreset.cloth;
         double size = Math.max(Math.max(c.width, c.height), 0.6);
-        double cy = c.plane == xpbdcloth.engine.ClothBuilder.Plane.VERTICAL ? c.origin[1] - 0.5 * c.height : c.origin[1] - 0.3 * size;
+        double cx = c.origin[0], cy;
+        if (c.rows == 1) { cx -= 0.5 * c.width; cy = c.origin[1] - 0.5 * c.width; } // a rope swings below its pin
+        else if (c.plane == xpbdcloth.engine.ClothBuilder.Plane.VERTICAL) cy = c.origin[1] - 0.5 * c.height;
+        else cy = c.origin[1] - 0.3 * size;
         double distance = size * (framedSideBySide ? 2.6 : 1.5) + 0.4;
-        camera.setStartView(c.origin[0], cy, c.origin[2], distance);
+        // Horizontal cloths are seen from higher up, so their surface shows.
+        double pitch = c.plane == xpbdcloth.engine.ClothBuilder.Plane.HORIZONTAL && c.rows > 1 ? -0.55 : -0.15;
+        camera.setStartView(cx, cy, c.origin[2], distance, pitch);
     }
 
     /** World offset along x of running scene i: the pair stands side by side, PBD on the left. */

@@ -26,7 +26,7 @@ public final class OrbitCamera {
     private double distance;
     private final double[] centre = new double[3];
     private final double minDistance, maxDistance;
-    private final Quaternion startRotation;
+    private Quaternion startRotation;
     private double startDistance;
     private final double[] startCentre;
 
@@ -64,8 +64,9 @@ public final class OrbitCamera {
         startCentre = centre.clone();
     }
 
-    /** Makes (cx, cy, cz) at {@code distance} the start view, and jumps there. */
-    public void setStartView(double cx, double cy, double cz, double distance) {
+    /** Makes (cx, cy, cz) at {@code distance}, pitched by {@code pitch} rad (negative: from above), the start view, and jumps there. */
+    public void setStartView(double cx, double cy, double cz, double distance, double pitch) {
+        startRotation = Quaternion.axisAngle(1, 0, 0, pitch);
         startCentre[0] = cx; startCentre[1] = cy; startCentre[2] = cz;
         startDistance = clampDistance(distance);
         rotation = startRotation;

@@ -36,6 +36,18 @@ class KeyBindingsTest {
         }
     }
 
+    /** The README's key table lists every key of the table, with the same help text. */
+    @Test
+    void readmeListsEveryKey() throws Exception {
+        String readme = java.nio.file.Files.readString(java.nio.file.Path.of("README.md"));
+        for (KeyBinding b : KeyBindings.all()) {
+            String key = b.key == ' ' ? "space" : String.valueOf(b.key);
+            if (Character.isDigit(b.key)) continue; // listed as one row, 1–5
+            assertTrue(readme.contains("| `" + key + "` | " + b.help + " |"), "README lists key " + key);
+        }
+        assertTrue(readme.contains("| `1`–`5` |"));
+    }
+
     @Test
     void modeToggleKeepsTheRunningScene() {
         SketchState s = fresh();
