@@ -32,6 +32,7 @@ public final class Simulation {
     private Constraint[] order = new Constraint[0];
     private double time;
     private long stepCount;
+    private SweepListener sweepListener;
 
     public Simulation(Particles particles, SolverSettings settings) {
         if (particles == null) throw new IllegalArgumentException("particles must not be null, was null");
@@ -142,8 +143,10 @@ public final class Simulation {
             for (int k = 0, nk = kinematics.size(); k < nk; k++) kinematics.get(k).apply(particles, t);
             for (int k = 0, nk = spheres.size(); k < nk; k++) spheres.get(k).advance(t, h);
             for (Constraint c : cs) c.beginSubstep(ctx);
+            if (sweepListener != null) sweepListener.afterSweep(this, s, -1);
             for (int it = 0; it < iterations; it++) {
                 for (Constraint c : cs) c.project(particles, ctx);
+                if (sweepListener != null) sweepListener.afterSweep(this, s, it);
             }
             updateVelocities(h);
             time = t;
@@ -171,6 +174,30 @@ public final class Simulation {
         final double[] x = particles.x, prev = particles.prev, v = particles.v;
         final double inv = 1.0 / h;
         for (int k = 0, n = 3 * particles.count(); k < n; k++) v[k] = (x[k] - prev[k]) * inv;
+    }
+
+    /** Observes the solver after every sweep (convergence experiments); null for none. */
+    public void setSweepListener(SweepListener listener) { sweepListener = listener; }
+
+    /** The substep h of the step in progress (or of the last step), seconds. */
+    public double substep() { return ctx.h; }
+
+    /**
+     * ‖C + α̃λ‖₂ over the equality constraints (contacts and attachments left out): the residual of
+     * XPBD's constraint equation, zero when every constraint holds at its compliant equilibrium. In PBD
+     * mode α̃ is taken as 0, so it is ‖C‖₂.
+     */
+    public double residual() {
+        double sum = 0;
+        double inverseH2 = ctx.inverseH2;
+        boolean xpbd = settings.mode() == ConstraintMode.XPBD;
+        for (Constraint c : order) {
+            ConstraintFamily f = c.family();
+            if (f == ConstraintFamily.COLLISION || f == ConstraintFamily.ATTACHMENT) continue;
+            double r = c.evaluate(particles) + (xpbd ? c.compliance() * inverseH2 * c.lambda() : 0);
+            sum += r * r;
+        }
+        return Math.sqrt(sum);
     }
 
     /** Places every sphere at its path's start and sets the clock to 0 (scene reset). */

@@ -12,7 +12,7 @@ import xpbdcloth.sketch.Launcher;
 /** The command line: opens the sketch, records frames, runs the benchmark. */
 @Command(name = "xpbd-cloth", mixinStandardHelpOptions = true, version = "xpbd-cloth 0.1.0",
         description = "Real-time PBD/XPBD cloth. With no command, opens the sketch.",
-        subcommands = {Main.Record.class, Main.BenchCommand.class})
+        subcommands = {Main.Record.class, Main.BenchCommand.class, xpbdcloth.experiments.Experiments.class})
 public final class Main implements Callable<Integer> {
     @Option(names = "--scene", description = "built-in scene (${COMPLETION-CANDIDATES}) or a preset file", defaultValue = "hanging",
             completionCandidates = Scenes.class)
