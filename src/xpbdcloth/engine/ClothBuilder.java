@@ -109,6 +109,8 @@ public final class ClothBuilder {
             Check.index("pin row", pin[0], rows);
             Check.index("pin col", col, columns);
         }
+        if (Double.isNaN(totalMass) && area() == 0)
+            throw new IllegalArgumentException("arealDensity needs a cloth of non-zero area (use totalMass for a zero-area cloth), area was 0.0");
         Particles p = new Particles(columns * rows);
         double dx = columns > 1 ? width / (columns - 1) : 0;
         double dy = rows > 1 ? height / (rows - 1) : 0;

@@ -108,6 +108,14 @@ public abstract class Constraint {
         return dLambda;
     }
 
+    /**
+     * Takes back the part (1 − scale) of a Δλ just returned by {@link #deltaLambda}, for a constraint
+     * that shortens its own step (a trust region) and still wants λ to be the sum of what it applied.
+     */
+    protected final void shortenLastStep(double dLambda, double scale) {
+        lambda -= dLambda * (1 - scale);
+    }
+
     /** Δλ for a hard constraint (k = 1, α = 0, the same in both modes), accumulated into λ. */
     protected final double hardDeltaLambda(double C, double wGradSq) {
         if (wGradSq <= 0) return 0;

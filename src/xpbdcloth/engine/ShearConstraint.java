@@ -15,10 +15,16 @@ package xpbdcloth.engine;
  * Müller et al. 2007 §4; normalised-edge gradient as in any vector-calculus text.
  * Degenerate cases: at θ = 0 or π (edges parallel or anti-parallel) the direction (ê₂ − c ê₁)/sin θ is
  * undefined and the projection is skipped; so is a zero-length edge. No NaN can leave this class.
+ * Trust region: θ is far from linear in the positions. When only the vertex can move and it is far from
+ * its two pinned ends, ∇_o C = −(∇₁C + ∇₂C) nearly cancels and the linearised step C/|∇_o C| flings the
+ * vertex away, which shrinks θ further (a divergent Newton step, found by the fuzzer). So no particle
+ * moves more than half its shorter edge in one projection; λ records only what was applied.
  */
 public final class ShearConstraint extends Constraint {
     /** Below this sin θ the edges count as parallel. */
     static final double MIN_SIN = 1e-9;
+    /** The most a particle may move in one projection, as a fraction of the shorter edge. */
+    static final double MAX_MOVE = 0.5;
 
     final int o, p1, p2;
     final double restAngle;
@@ -96,6 +102,13 @@ public final class ShearConstraint extends Constraint {
         double w0 = p.w[o], w1 = p.w[p1], w2 = p.w[p2];
         double wGradSq = w0 * (g0x * g0x + g0y * g0y + g0z * g0z) + w1 * inv1 * inv1 + w2 * inv2 * inv2;
         double dLambda = deltaLambda(C, wGradSq, ctx);
+        double largestMove = Math.abs(dLambda) * Math.max(w0 * Math.sqrt(g0x * g0x + g0y * g0y + g0z * g0z), Math.max(w1 * inv1, w2 * inv2));
+        double allowed = MAX_MOVE * Math.min(l1, l2);
+        if (largestMove > allowed) {
+            double scale = allowed / largestMove;
+            shortenLastStep(dLambda, scale);
+            dLambda *= scale;
+        }
         double a0 = w0 * dLambda, a1 = w1 * dLambda, a2 = w2 * dLambda;
         x[io] += a0 * g0x; x[io + 1] += a0 * g0y; x[io + 2] += a0 * g0z;
         x[i1] += a1 * g1x; x[i1 + 1] += a1 * g1y; x[i1 + 2] += a1 * g1z;

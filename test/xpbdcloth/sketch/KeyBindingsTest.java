@@ -96,9 +96,11 @@ class KeyBindingsTest {
     void brokenPresetKeepsTheRunningScene(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir) throws Exception {
         SketchState s = fresh();
         var before = s.first();
+        double[] positions = before.particles().positions().clone();
         var bad = java.nio.file.Files.writeString(dir.resolve("bad.json"), "{ \"name\": 3 }");
         assertFalse(s.load(bad));
         assertSame(before, s.first(), "the same simulation keeps running");
+        assertArrayEquals(positions, before.particles().positions(), 0.0, "untouched, bit for bit");
         assertTrue(s.messageIsError());
         assertTrue(s.message().contains("bad.json: name: must be a string"), s.message());
         s.advance();
