@@ -30,6 +30,9 @@ public final class Simulation {
     private final SolverContext ctx = new SolverContext();
     /** The solve order, rebuilt only when the set of constraints changes. */
     private Constraint[] order = new Constraint[0];
+    /** The coloured order, built on first use after a change of the constraint set. */
+    private Colouring colouring;
+    private ParallelSweeps parallel;
     private double time;
     private long stepCount;
     private SweepListener sweepListener;
@@ -124,7 +127,22 @@ public final class Simulation {
         for (Constraint c : attachments) next[n++] = c;
         for (Constraint c : contacts) next[n++] = c;
         order = next;
+        colouring = null;
     }
+
+    private Colouring colouring() {
+        if (colouring == null) {
+            java.util.List<Colouring> parts = Colouring.list();
+            parts.add(Colouring.of(body.toArray(new Constraint[0]), particles.count()));
+            parts.add(Colouring.of(attachments.toArray(new Constraint[0]), particles.count()));
+            parts.add(Colouring.of(contacts.toArray(new Constraint[0]), particles.count()));
+            colouring = Colouring.concat(parts);
+        }
+        return colouring;
+    }
+
+    /** Number of colours of the coloured order (built if needed): the barriers per sweep when parallel. */
+    public int colourCount() { return colouring().colours(); }
 
     /** One step of the settings' timestep. */
     public void step() { step(settings.timestep()); }
@@ -136,7 +154,10 @@ public final class Simulation {
         final double h = dt / substeps;
         for (int f = 0, nf = forces.size(); f < nf; f++) forces.get(f).apply(particles, time);
         ctx.load(settings, h);
-        final Constraint[] cs = order;
+        final boolean coloured = settings.order() == ConstraintOrder.COLOURED;
+        final Colouring col = coloured ? colouring() : null;
+        final Constraint[] cs = coloured ? col.ordered : order;
+        final ParallelSweeps team = parallelFor(settings.threads());
         for (int s = 0; s < substeps; s++) {
             predict(h);
             final double t = time + h;
@@ -144,15 +165,35 @@ public final class Simulation {
             for (int k = 0, nk = spheres.size(); k < nk; k++) spheres.get(k).advance(t, h);
             for (Constraint c : cs) c.beginSubstep(ctx);
             if (sweepListener != null) sweepListener.afterSweep(this, s, -1);
-            for (int it = 0; it < iterations; it++) {
-                for (Constraint c : cs) c.project(particles, ctx);
-                if (sweepListener != null) sweepListener.afterSweep(this, s, it);
+            if (team != null && sweepListener == null) {
+                team.sweep(col, particles, ctx, iterations);
+            } else {
+                for (int it = 0; it < iterations; it++) {
+                    for (Constraint c : cs) c.project(particles, ctx);
+                    if (sweepListener != null) sweepListener.afterSweep(this, s, it);
+                }
             }
             updateVelocities(h);
             time = t;
         }
         java.util.Arrays.fill(particles.force, 0);
         stepCount++;
+    }
+
+    /** The helper threads for {@code threads} (made once per thread count), or null for one thread. */
+    private ParallelSweeps parallelFor(int threads) {
+        if (threads <= 1) return null;
+        if (parallel == null || parallel.threads() != threads) {
+            if (parallel != null) parallel.close();
+            parallel = new ParallelSweeps(threads);
+        }
+        return parallel;
+    }
+
+    /** Stops helper threads, if any (they are daemons, so this is only needed to free them early). */
+    public void close() {
+        if (parallel != null) parallel.close();
+        parallel = null;
     }
 
     private void predict(double h) {

@@ -14,6 +14,8 @@ public final class SolverSettings {
     private double timestep = 0.020;
     private boolean mullerCorrection = true;
     private double gravityX = 0, gravityY = -9.81, gravityZ = 0;
+    private ConstraintOrder order = ConstraintOrder.AS_BUILT;
+    private int threads = 1;
     /** Bumped on every change that invalidates a constraint's cached per-iteration stiffness. */
     private long revision;
 
@@ -27,6 +29,8 @@ public final class SolverSettings {
         s.timestep = timestep;
         s.mullerCorrection = mullerCorrection;
         s.gravityX = gravityX; s.gravityY = gravityY; s.gravityZ = gravityZ;
+        s.order = order;
+        s.threads = threads;
         return s;
     }
 
@@ -84,6 +88,25 @@ public final class SolverSettings {
     public SolverSettings gravity(double gx, double gy, double gz) {
         Check.finite3("gravity", gx, gy, gz);
         gravityX = gx; gravityY = gy; gravityZ = gz;
+        return this;
+    }
+
+    /** The order of each sweep (default as built); more than one thread always uses the coloured order. */
+    public ConstraintOrder order() { return threads > 1 ? ConstraintOrder.COLOURED : order; }
+
+    public SolverSettings order(ConstraintOrder o) {
+        if (o == null) throw new IllegalArgumentException("order must be AS_BUILT or COLOURED, was null");
+        order = o;
+        return this;
+    }
+
+    /** Threads for the sweeps, 1 to 64; above 1 the coloured order is split across them. */
+    public int threads() { return threads; }
+
+    public SolverSettings threads(int t) {
+        Check.atLeast("threads", t, 1);
+        if (t > 64) throw new IllegalArgumentException("threads must be <= 64, was " + t);
+        threads = t;
         return this;
     }
 

@@ -6,7 +6,6 @@ import processing.core.PConstants;
 import processing.core.PGraphics;
 import xpbdcloth.engine.Constraint;
 import xpbdcloth.engine.ConstraintFamily;
-import xpbdcloth.engine.ConstraintMode;
 import xpbdcloth.engine.Metrics;
 import xpbdcloth.engine.Simulation;
 import xpbdcloth.scene.Scene;
@@ -41,7 +40,7 @@ final class Hud {
         return max;
     }
 
-    void draw(PGraphics g, SketchState s, double simMs, double renderMs, double fps) {
+    void draw(PGraphics g, SketchState s, double simMs, double renderMs, double bytesPerFrame, double fps) {
         List<Scene> running = s.running();
         Simulation sim = running.get(0).simulation();
         ConstraintFamily fam = s.shownFamily();
@@ -56,7 +55,7 @@ final class Hud {
                 fmt("family %s", famName),
                 fmt("  PBD  k %.2f  ->  k' %.4f %s", km[0], kPrime, s.mullerCorrection() ? "(Müller, n=" + s.iterations() + ")" : "(raw k)"),
                 fmt("  XPBD alpha %.2e m/N  ->  1/alpha %s", km[1], km[1] == 0 ? "infinite (hard)" : fmt("%.2e N/m", 1 / km[1])),
-                fmt("sim %.2f ms/step   render %.2f ms   %.0f fps", simMs, renderMs, fps),
+                fmt("sim %.2f ms/step   render %.2f ms   %.0f fps   %.1f kB allocated/frame", simMs, renderMs, fps, bytesPerFrame / 1024),
                 fmt("particles %d   constraints %d", sim.particles().count() * running.size(), constraints),
                 fmt("strain mean %.2f %%  max %.2f %%   KE %.2e J   max link force %.3f N",
                         100 * Metrics.meanStrain(sim, ConstraintFamily.STRUCTURAL), 100 * Metrics.maxStrain(sim, ConstraintFamily.STRUCTURAL),
@@ -144,6 +143,4 @@ final class Hud {
         g.fill(230);
         for (String m : mouse) g.text(m, x + 10, y + 6 + lineH * row++);
     }
-
-    static boolean isXpbd(Simulation sim) { return sim.settings().mode() == ConstraintMode.XPBD; }
 }

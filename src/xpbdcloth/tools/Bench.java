@@ -1,42 +1,112 @@
 package xpbdcloth.tools;
 
 import java.lang.management.ManagementFactory;
+import java.util.HashMap;
+import java.util.Locale;
+import java.util.Map;
 import xpbdcloth.engine.Cloth;
 import xpbdcloth.engine.ClothBuilder;
+import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.ConstraintMode;
+import xpbdcloth.engine.ConstraintOrder;
+import xpbdcloth.engine.DistanceConstraint;
 import xpbdcloth.engine.Particles;
 import xpbdcloth.engine.Simulation;
 import xpbdcloth.engine.SolverSettings;
+import xpbdcloth.engine.Sphere;
+import xpbdcloth.engine.SpherePath;
 
 /**
  * The benchmark behind {@code gradle bench}: an N×N grid of structural distance constraints (two top
  * corners pinned, 1 cm spacing, 0.1 g per particle, XPBD α = 1e-7 m/N, g = 9.81 m/s², dt = 1/60 s,
- * 10 iterations, no substeps, row-major order) for N = 32, 64, 128 on one thread. Prints CSV and nothing
- * else on stdout:
+ * 10 iterations, no substeps) for N = 32, 64, 128 on one thread, in the engine's coloured order (see
+ * {@link ConstraintOrder}). Prints CSV and nothing else on stdout:
  * {@code n,particles,constraints,ms_per_step,projections_per_s,alloc_bytes_per_step}.
- * Timing is a warmed-up loop (at least 2 s of warm-up, then at least 3 s measured); allocation is
- * measured over the same steady-state steps with the JVM's per-thread allocation counter.
+ *
+ * <p>{@code --full} prints the same columns after a first column {@code case}: the row-major order, the
+ * Ten Minute Physics workload (15 substeps × 1 iteration, stretch + bending distance constraints), all
+ * families with a sphere, N = 256, and the coloured solve on 1 and 2 threads; memory per particle and
+ * per constraint goes to stderr.
+ *
+ * <p>Timing is a warmed-up loop: at least 2 s of warm-up, then at least 3 s measured; allocation is
+ * measured over the same steady-state steps with the JVM's per-thread allocation counter (helper
+ * threads of the parallel solve allocate nothing either: they are made during warm-up).
  */
 public final class Bench {
     private Bench() {}
 
+    static final String HEADER = "n,particles,constraints,ms_per_step,projections_per_s,alloc_bytes_per_step";
+
     public static void main(String[] args) {
-        System.out.println("n,particles,constraints,ms_per_step,projections_per_s,alloc_bytes_per_step");
-        for (int n : new int[] {32, 64, 128}) row(n);
+        boolean full = args.length > 0 && args[0].equals("--full");
+        if (!full) {
+            System.out.println(HEADER);
+            for (int n : new int[] {32, 64, 128}) System.out.println(row(grid(n, ConstraintOrder.COLOURED, 1)));
+            return;
+        }
+        System.out.println("case," + HEADER);
+        for (int n : new int[] {32, 64, 128, 256}) System.out.println("coloured," + row(grid(n, ConstraintOrder.COLOURED, 1)));
+        for (int n : new int[] {32, 64, 128, 256}) System.out.println("row-major," + row(grid(n, ConstraintOrder.AS_BUILT, 1)));
+        for (int n : new int[] {32, 64, 128}) System.out.println("ten-minute-physics," + row(tenMinutePhysics(n)));
+        for (int n : new int[] {32, 64, 128}) System.out.println("all-families-sphere," + row(allFamilies(n)));
+        for (int t : new int[] {1, 2}) System.out.println("parallel-" + t + "-threads," + row(grid(128, ConstraintOrder.COLOURED, t)));
+        for (int t : new int[] {1, 2}) System.out.println("parallel-" + t + "-threads," + row(grid(256, ConstraintOrder.COLOURED, t)));
+        memory();
     }
 
-    static Simulation grid(int n) {
+    static Simulation grid(int n, ConstraintOrder order, int threads) {
         Cloth cloth = new ClothBuilder().resolution(n, n).size(0.01 * (n - 1), 0.01 * (n - 1))
-                .family(xpbdcloth.engine.ConstraintFamily.STRUCTURAL, 1.0, 1e-7).pinTopCorners().build();
+                .family(ConstraintFamily.STRUCTURAL, 1.0, 1e-7).pinTopCorners().build();
         Particles p = cloth.particles();
         for (int i = 0; i < p.count(); i++) p.setMass(i, 1e-4);
         SolverSettings s = new SolverSettings().mode(ConstraintMode.XPBD).iterations(10).substeps(1)
-                .timestep(1 / 60.0).gravity(0, -9.81, 0);
+                .timestep(1 / 60.0).gravity(0, -9.81, 0).order(order).threads(threads);
         return cloth.simulation(s);
     }
 
-    static void row(int n) {
-        Simulation sim = grid(n);
+    /**
+     * The Ten Minute Physics cloth: stretch constraints on the triangle edges (α = 0) and bending
+     * constraints as distances between the opposite vertices of triangle pairs (α = 1 m/N), 15 substeps
+     * of 1 iteration. Our grid's triangles differ in diagonal pattern; the constraint counts are the same
+     * kind (edges + one bending pair per interior edge).
+     */
+    static Simulation tenMinutePhysics(int n) {
+        Cloth cloth = new ClothBuilder().resolution(n, n).size(0.01 * (n - 1), 0.01 * (n - 1)).withoutFamily(ConstraintFamily.STRUCTURAL)
+                .arealDensity(0.2).pinTopCorners().build();
+        Particles p = cloth.particles();
+        Simulation sim = new Simulation(p, new SolverSettings().mode(ConstraintMode.XPBD).iterations(1).substeps(15)
+                .timestep(1 / 60.0).order(ConstraintOrder.COLOURED));
+        int[] t = cloth.triangles();
+        Map<Long, Integer> firstOpposite = new HashMap<>();
+        for (int k = 0; k < t.length; k += 3)
+            for (int e = 0; e < 3; e++) {
+                int a = t[k + e], b = t[k + (e + 1) % 3], opposite = t[k + (e + 2) % 3];
+                long key = (long) Math.min(a, b) * p.count() + Math.max(a, b);
+                Integer other = firstOpposite.putIfAbsent(key, opposite);
+                if (other == null) sim.add(DistanceConstraint.between(p, a, b)); // stretch, α = 0
+                else {
+                    DistanceConstraint bend = new DistanceConstraint(ConstraintFamily.BEND, other, opposite, 0);
+                    DistanceConstraint at = DistanceConstraint.between(p, other, opposite);
+                    bend = new DistanceConstraint(ConstraintFamily.BEND, other, opposite, at.restLength());
+                    bend.setCompliance(1.0);
+                    sim.add(bend);
+                }
+            }
+        return sim;
+    }
+
+    /** All three families (defaults of the hanging scene) and a sphere the cloth hangs against. */
+    static Simulation allFamilies(int n) {
+        Cloth cloth = new ClothBuilder().resolution(n, n).size(1, 1).origin(0, 1.6, 0).arealDensity(0.2).pinTopCorners()
+                .family(ConstraintFamily.STRUCTURAL, 1, 1e-6).family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2).build();
+        Simulation sim = cloth.simulation(new SolverSettings().mode(ConstraintMode.XPBD).iterations(2).substeps(10)
+                .timestep(0.02).order(ConstraintOrder.COLOURED));
+        sim.add(new Sphere(SpherePath.oscillation(0, 1.1, 0.1, 0, 0, 0.15, 0.5), 0.2, 0.01, 0.5, 0.35));
+        return sim;
+    }
+
+    static String row(Simulation sim) {
+        int n = (int) Math.round(Math.sqrt(sim.particles().count()));
         int constraints = sim.constraints().length;
         long warmEnd = System.nanoTime() + 2_000_000_000L;
         while (System.nanoTime() < warmEnd) sim.step();
@@ -46,14 +116,32 @@ public final class Bench {
         long steps = 0;
         long t;
         do {
-            for (int k = 0; k < 10; k++) sim.step();
-            steps += 10;
+            for (int k = 0; k < 5; k++) sim.step();
+            steps += 5;
             t = System.nanoTime();
         } while (t - t0 < 3_000_000_000L);
         long alloc1 = threads.getCurrentThreadAllocatedBytes();
+        sim.close();
         double msPerStep = (t - t0) / 1e6 / steps;
         double projections = (double) constraints * sim.settings().iterations() * sim.settings().substeps();
-        System.out.printf(java.util.Locale.ROOT, "%d,%d,%d,%.4f,%.0f,%d%n", n, sim.particles().count(), constraints,
+        return String.format(Locale.ROOT, "%d,%d,%d,%.4f,%.0f,%d", n, sim.particles().count(), constraints,
                 msPerStep, projections / (msPerStep / 1000), (alloc1 - alloc0) / steps);
+    }
+
+    /** Heap bytes per particle and per constraint, from the heap growth of building big grids (stderr). */
+    static void memory() {
+        Runtime rt = Runtime.getRuntime();
+        System.gc();
+        long base = rt.totalMemory() - rt.freeMemory();
+        Particles p = new Particles(1_000_000);
+        System.gc();
+        long afterParticles = rt.totalMemory() - rt.freeMemory();
+        DistanceConstraint[] cs = new DistanceConstraint[1_000_000];
+        for (int i = 0; i < cs.length; i++) cs[i] = new DistanceConstraint(ConstraintFamily.STRUCTURAL, i, i + 1, 0.01);
+        System.gc();
+        long afterConstraints = rt.totalMemory() - rt.freeMemory();
+        System.err.printf(Locale.ROOT, "memory: %.0f bytes per particle, %.0f bytes per distance constraint (object + reference)%n",
+                (afterParticles - base) / 1e6, (afterConstraints - afterParticles) / 1e6);
+        if (p.count() + cs.length == 0) System.err.println();
     }
 }
