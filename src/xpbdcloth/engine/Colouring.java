@@ -1,6 +1,5 @@
 package xpbdcloth.engine;
 
-import java.util.ArrayList;
 import java.util.List;
 
 /**
@@ -62,8 +61,6 @@ final class Colouring {
         }
         return new Colouring(ordered, start);
     }
-
-    static List<Colouring> list() { return new ArrayList<>(); }
 
     private static boolean isSet(long[] bits, int c) {
         return bits != null && (c >> 6) < bits.length && (bits[c >> 6] & (1L << (c & 63))) != 0;

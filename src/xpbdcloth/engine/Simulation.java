@@ -33,6 +33,9 @@ public final class Simulation {
     /** The coloured order, built on first use after a change of the constraint set. */
     private Colouring colouring;
     private ParallelSweeps parallel;
+    /** The global solver for the body constraints, built on first use after a change of them. */
+    private GlobalSolver global;
+    private Constraint[] afterGlobal;
     private double time;
     private long stepCount;
     private SweepListener sweepListener;
@@ -128,11 +131,12 @@ public final class Simulation {
         for (Constraint c : contacts) next[n++] = c;
         order = next;
         colouring = null;
+        global = null;
     }
 
     private Colouring colouring() {
         if (colouring == null) {
-            java.util.List<Colouring> parts = Colouring.list();
+            List<Colouring> parts = new ArrayList<>();
             parts.add(Colouring.of(body.toArray(new Constraint[0]), particles.count()));
             parts.add(Colouring.of(attachments.toArray(new Constraint[0]), particles.count()));
             parts.add(Colouring.of(contacts.toArray(new Constraint[0]), particles.count()));
@@ -165,7 +169,14 @@ public final class Simulation {
             for (int k = 0, nk = spheres.size(); k < nk; k++) spheres.get(k).advance(t, h);
             for (Constraint c : cs) c.beginSubstep(ctx);
             if (sweepListener != null) sweepListener.afterSweep(this, s, -1);
-            if (team != null && sweepListener == null) {
+            if (settings.solver() != SolverType.GAUSS_SEIDEL) {
+                GlobalSolver g = globalSolver();
+                for (int it = 0; it < iterations; it++) {
+                    g.iterate(particles, ctx);
+                    for (Constraint c : afterGlobal) c.project(particles, ctx);
+                    if (sweepListener != null) sweepListener.afterSweep(this, s, it);
+                }
+            } else if (team != null && sweepListener == null) {
                 team.sweep(col, particles, ctx, iterations);
             } else {
                 for (int it = 0; it < iterations; it++) {
@@ -179,6 +190,28 @@ public final class Simulation {
         java.util.Arrays.fill(particles.force, 0);
         stepCount++;
     }
+
+    private GlobalSolver globalSolver() {
+        boolean mg = settings.solver() == SolverType.MULTIGRID_PCG;
+        if (global == null || global.multigrid() != mg || global.tolerance() != settings.pcgTolerance() || global.maxIterations() != settings.pcgMaxIterations()) {
+            global = new GlobalSolver(body.toArray(new Constraint[0]), particles.count(), mg, settings.pcgTolerance(), settings.pcgMaxIterations());
+            Constraint[] rest = new Constraint[attachments.size() + contacts.size()];
+            int n = 0;
+            for (Constraint c : attachments) rest[n++] = c;
+            for (Constraint c : contacts) rest[n++] = c;
+            afterGlobal = rest;
+        }
+        return global;
+    }
+
+    /** Conjugate-gradient iterations of the last global iteration (0 with Gauss–Seidel). */
+    public int lastPcgIterations() { return global == null ? 0 : global.lastIterations(); }
+
+    /** Conjugate-gradient iterations since the global solver was built. */
+    public int totalPcgIterations() { return global == null ? 0 : global.totalIterations(); }
+
+    /** Multigrid levels and setup time (ns) of the global solver, {0, 0} if none. */
+    public long[] multigridSetup() { return global == null ? new long[2] : new long[] {global.multigridLevels(), global.multigridSetupNanos()}; }
 
     /** The helper threads for {@code threads} (made once per thread count), or null for one thread. */
     private ParallelSweeps parallelFor(int threads) {

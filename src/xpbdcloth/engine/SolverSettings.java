@@ -16,6 +16,9 @@ public final class SolverSettings {
     private double gravityX = 0, gravityY = -9.81, gravityZ = 0;
     private ConstraintOrder order = ConstraintOrder.AS_BUILT;
     private int threads = 1;
+    private SolverType solver = SolverType.GAUSS_SEIDEL;
+    private double pcgTolerance = 1e-8;
+    private int pcgMaxIterations = 500;
     /** Bumped on every change that invalidates a constraint's cached per-iteration stiffness. */
     private long revision;
 
@@ -31,6 +34,9 @@ public final class SolverSettings {
         s.gravityX = gravityX; s.gravityY = gravityY; s.gravityZ = gravityZ;
         s.order = order;
         s.threads = threads;
+        s.solver = solver;
+        s.pcgTolerance = pcgTolerance;
+        s.pcgMaxIterations = pcgMaxIterations;
         return s;
     }
 
@@ -107,6 +113,32 @@ public final class SolverSettings {
         Check.atLeast("threads", t, 1);
         if (t > 64) throw new IllegalArgumentException("threads must be <= 64, was " + t);
         threads = t;
+        return this;
+    }
+
+    /** Gauss–Seidel (default) or a global PCG solve per iteration; contacts always use Gauss–Seidel. */
+    public SolverType solver() { return solver; }
+
+    public SolverSettings solver(SolverType t) {
+        if (t == null) throw new IllegalArgumentException("solver must be GAUSS_SEIDEL, JACOBI_PCG or MULTIGRID_PCG, was null");
+        solver = t;
+        return this;
+    }
+
+    /** Relative residual at which conjugate gradients stop, in (0, 1). */
+    public double pcgTolerance() { return pcgTolerance; }
+
+    public SolverSettings pcgTolerance(double tol) {
+        if (!(tol > 0 && tol < 1)) throw new IllegalArgumentException("pcgTolerance must be in (0, 1), was " + tol);
+        pcgTolerance = tol;
+        return this;
+    }
+
+    /** Most conjugate-gradient iterations per global iteration, ≥ 1. */
+    public int pcgMaxIterations() { return pcgMaxIterations; }
+
+    public SolverSettings pcgMaxIterations(int n) {
+        pcgMaxIterations = Check.atLeast("pcgMaxIterations", n, 1);
         return this;
     }
 

@@ -24,6 +24,7 @@ public final class Experiments implements Callable<Integer> {
         e.add(new ClosedForm());
         e.add(new GaussSeidelConvergence());
         e.add(new SubstepsVsIterations());
+        e.add(new GlobalSolverComparison());
         return e;
     }
 

@@ -71,10 +71,12 @@ public final class Preset {
         public final double dt;
         public final boolean mullerCorrection;
         public final double[] gravity;
+        public final xpbdcloth.engine.SolverType type;
 
-        Solver(ConstraintMode mode, int iterations, int substeps, double dt, boolean mullerCorrection, double[] gravity) {
+        Solver(ConstraintMode mode, int iterations, int substeps, double dt, boolean mullerCorrection, double[] gravity,
+               xpbdcloth.engine.SolverType type) {
             this.mode = mode; this.iterations = iterations; this.substeps = substeps; this.dt = dt;
-            this.mullerCorrection = mullerCorrection; this.gravity = gravity;
+            this.mullerCorrection = mullerCorrection; this.gravity = gravity; this.type = type;
         }
     }
 

@@ -179,7 +179,7 @@ public final class PresetLoader {
         }
 
         Preset.Solver solver(Node n) {
-            object(n, Set.of("mode", "iterations", "substeps", "dt", "mullerCorrection", "gravity"));
+            object(n, Set.of("mode", "iterations", "substeps", "dt", "mullerCorrection", "gravity", "type"));
             ConstraintMode mode = choice(required(n, "mode"), ConstraintMode.class);
             int iterations = integer(required(n, "iterations"), 1, 1000);
             Node s = optional(n, "substeps");
@@ -190,7 +190,17 @@ public final class PresetLoader {
             boolean muller = m == null || bool(m);
             Node g = optional(n, "gravity");
             double[] gravity = g == null ? new double[] {0, -9.81, 0} : vector(g);
-            return new Preset.Solver(mode, iterations, substeps, dt, muller, gravity);
+            Node t = optional(n, "type");
+            xpbdcloth.engine.SolverType type = t == null ? xpbdcloth.engine.SolverType.GAUSS_SEIDEL : solverType(t);
+            return new Preset.Solver(mode, iterations, substeps, dt, muller, gravity, type);
+        }
+
+        /** "gauss-seidel", "jacobi-pcg" or "multigrid-pcg". */
+        xpbdcloth.engine.SolverType solverType(Node n) {
+            String s = string(n);
+            for (xpbdcloth.engine.SolverType t : xpbdcloth.engine.SolverType.values())
+                if (t.name().replace('_', '-').equalsIgnoreCase(s)) return t;
+            throw fail(n.path, "must be one of gauss-seidel, jacobi-pcg, multigrid-pcg, was \"" + s + "\"");
         }
 
         Preset.SphereSpec sphere(Node n) {

@@ -37,6 +37,7 @@ public final class SketchState {
     private int iterations, substeps;
     private double dt;
     private boolean muller;
+    private xpbdcloth.engine.SolverType solverType;
     private final Map<ConstraintFamily, double[]> materials = new EnumMap<>(ConstraintFamily.class);
     private int familyChoice;
 
@@ -64,6 +65,7 @@ public final class SketchState {
         substeps = p.solver.substeps;
         dt = p.solver.dt;
         muller = p.solver.mullerCorrection;
+        solverType = p.solver.type;
         materials.clear();
         p.families.forEach((f, m) -> materials.put(f, new double[] {m.stiffness, m.compliance}));
         windOn = p.wind != null;
@@ -85,7 +87,7 @@ public final class SketchState {
     private void applyAll() {
         for (Scene s : running()) {
             SolverSettings st = s.simulation().settings();
-            st.iterations(iterations).substeps(substeps).timestep(dt).mullerCorrection(muller);
+            st.iterations(iterations).substeps(substeps).timestep(dt).mullerCorrection(muller).solver(solverType);
             st.mode(s == left ? ConstraintMode.PBD : s == right ? ConstraintMode.XPBD : mode);
             materials.forEach((f, km) -> {
                 s.simulation().setStiffness(f, km[0]);
@@ -106,6 +108,7 @@ public final class SketchState {
     public int substeps() { return substeps; }
     public double dt() { return dt; }
     public boolean mullerCorrection() { return muller; }
+    public xpbdcloth.engine.SolverType solverType() { return solverType; }
     public boolean windOn() { return windOn; }
     public double windSpeed() { return windSpeed; }
     public double windAngle() { return windAngle; }
@@ -140,6 +143,14 @@ public final class SketchState {
         muller = !muller;
         applyAll();
         say(muller ? "PBD: Müller's k' = 1-(1-k)^(1/n)" : "PBD: raw k every sweep");
+    }
+
+    /** Gauss–Seidel → Jacobi-PCG → multigrid-PCG → Gauss–Seidel, for the running scenes. */
+    public void cycleSolver() {
+        xpbdcloth.engine.SolverType[] all = xpbdcloth.engine.SolverType.values();
+        solverType = all[(solverType.ordinal() + 1) % all.length];
+        applyAll();
+        say("solver " + solverType.name().toLowerCase().replace('_', '-') + (solverType == xpbdcloth.engine.SolverType.GAUSS_SEIDEL ? "" : ": each iteration is one global Newton step; contacts stay Gauss-Seidel"));
     }
 
     public void changeIterations(int delta) {

@@ -85,10 +85,9 @@ public final class Bench {
                 Integer other = firstOpposite.putIfAbsent(key, opposite);
                 if (other == null) sim.add(DistanceConstraint.between(p, a, b)); // stretch, α = 0
                 else {
-                    DistanceConstraint bend = new DistanceConstraint(ConstraintFamily.BEND, other, opposite, 0);
-                    DistanceConstraint at = DistanceConstraint.between(p, other, opposite);
-                    bend = new DistanceConstraint(ConstraintFamily.BEND, other, opposite, at.restLength());
-                    bend.setCompliance(1.0);
+                    DistanceConstraint bend = new DistanceConstraint(ConstraintFamily.BEND, other, opposite,
+                            DistanceConstraint.between(p, other, opposite).restLength());
+                    bend.setCompliance(1.0); // bending, α = 1 m/N
                     sim.add(bend);
                 }
             }

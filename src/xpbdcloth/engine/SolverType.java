@@ -1,0 +1,11 @@
+package xpbdcloth.engine;
+
+/** How each iteration of a substep solves the constraints. */
+public enum SolverType {
+    /** Sequential Gauss–Seidel: one projection per constraint per sweep (the original's solver). */
+    GAUSS_SEIDEL,
+    /** Global: linearise all constraints and solve (J W Jᵀ + α̃) Δλ = −C − α̃λ by conjugate gradients, Jacobi-preconditioned. */
+    JACOBI_PCG,
+    /** The same system, preconditioned by an unsmoothed-aggregation multigrid V-cycle (as MGPBD). */
+    MULTIGRID_PCG
+}
