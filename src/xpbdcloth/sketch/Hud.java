@@ -40,7 +40,25 @@ final class Hud {
         return max;
     }
 
+    /** The text lines, formatted a few times a second rather than every frame: formatting allocates. */
+    private String[] lines = new String[0];
+    private int framesSinceFormat = Integer.MAX_VALUE;
+    private SketchState formattedFor;
+    static final int FORMAT_EVERY = 10;
+
     void draw(PGraphics g, SketchState s, double simMs, double renderMs, double bytesPerFrame, double fps) {
+        if (++framesSinceFormat >= FORMAT_EVERY || formattedFor != s || s.message() != lastMessage) {
+            lines = format(s, simMs, renderMs, bytesPerFrame, fps);
+            framesSinceFormat = 0;
+            formattedFor = s;
+            lastMessage = s.message();
+        }
+        drawLines(g, s);
+    }
+
+    private String lastMessage;
+
+    private String[] format(SketchState s, double simMs, double renderMs, double bytesPerFrame, double fps) {
         List<Scene> running = s.running();
         Simulation sim = running.get(0).simulation();
         ConstraintFamily fam = s.shownFamily();
@@ -64,6 +82,13 @@ final class Hud {
                         Metrics.kineticEnergy(sim.particles()), maxForce(sim)),
                 s.windOn() ? fmt("wind %.1f m/s towards %.0f°", s.windSpeed(), Math.toDegrees(s.windAngle())) : "wind off",
         };
+        return lines;
+    }
+
+    private void drawLines(PGraphics g, SketchState s) {
+        List<Scene> running = s.running();
+        ConstraintFamily fam = s.shownFamily();
+        double[] km = s.material(fam);
         g.noStroke();
         g.fill(0, 150);
         g.rect(8, 8, 560, 18 * lines.length + 12, 6);

@@ -24,6 +24,17 @@ public final class SketchState {
     /** Compliance changes by a factor √10 (half a decade) per key press. */
     static final double COMPLIANCE_FACTOR = Math.sqrt(10);
     static final double STIFFNESS_STEP = 0.05;
+    /**
+     * Solver threads for the sketch's scenes (the launcher's --threads). One by default: under a
+     * software renderer (Xvfb/Mesa) the other core draws the frame, and a second solver thread would
+     * only wait for it. The coloured solve gives the same result for any count.
+     */
+    private static int threads = 1;
+
+    public static void setThreads(int n) {
+        if (n < 1 || n > 64) throw new IllegalArgumentException("threads must be in [1, 64], was " + n);
+        threads = n;
+    }
     static final double MIN_COMPLIANCE = 1e-10, MAX_COMPLIANCE = 1e3;
     /** The families a material key acts on: null means all three. */
     static final ConstraintFamily[] FAMILY_CHOICES = {null, ConstraintFamily.STRUCTURAL, ConstraintFamily.SHEAR, ConstraintFamily.BEND};
@@ -87,7 +98,8 @@ public final class SketchState {
     private void applyAll() {
         for (Scene s : running()) {
             SolverSettings st = s.simulation().settings();
-            st.iterations(iterations).substeps(substeps).timestep(dt).mullerCorrection(muller).solver(solverType);
+            st.iterations(iterations).substeps(substeps).timestep(dt).mullerCorrection(muller).solver(solverType)
+                    .threads(threads);
             st.mode(s == left ? ConstraintMode.PBD : s == right ? ConstraintMode.XPBD : mode);
             materials.forEach((f, km) -> {
                 s.simulation().setStiffness(f, km[0]);

@@ -24,6 +24,9 @@ public final class Main implements Callable<Integer> {
     @Option(names = "--size", description = "window size WxH in pixels", defaultValue = "1280x800")
     String size;
 
+    @Option(names = "--threads", description = "solver threads (coloured parallel solve; same result for any count)", defaultValue = "1")
+    int threads;
+
     static final class Scenes extends java.util.ArrayList<String> {
         Scenes() { super(PresetLoader.BUILT_IN); }
     }
@@ -38,6 +41,7 @@ public final class Main implements Callable<Integer> {
         if (!displayAvailable("xpbd-cloth --scene " + scene)) return 2;
         PresetLoader.byNameOrPath(scene); // a bad name or file fails here, with its message
         int[] wh = parseSize(size);
+        xpbdcloth.sketch.SketchState.setThreads(threads);
         Launcher.open(scene, sideBySide, null, wh[0], wh[1]);
         return 0;
     }
@@ -86,6 +90,9 @@ public final class Main implements Callable<Integer> {
         @Option(names = "--size", description = "frame size WxH in pixels", defaultValue = "1280x720")
         String size;
 
+        @Option(names = "--threads", description = "solver threads", defaultValue = "1")
+        int threads;
+
         @Override public Integer call() {
             if (frames < 1) throw new IllegalArgumentException("frames must be >= 1, was " + frames);
             if (!displayAvailable("xpbd-cloth record --scene " + scene + " --frames " + frames)) return 2;
@@ -93,6 +100,7 @@ public final class Main implements Callable<Integer> {
             String name = new File(scene).getName().replace(".json", "");
             File folder = out != null ? out : new File("build/frames/" + name + (sideBySide ? "-side-by-side" : ""));
             int[] wh = parseSize(size);
+            xpbdcloth.sketch.SketchState.setThreads(threads);
             System.out.println("recording " + frames + " frames of " + scene + " into " + folder);
             Launcher.open(scene, sideBySide, new ClothApp.Recording(folder, frames), wh[0], wh[1]);
             return 0;
