@@ -14,35 +14,53 @@ import xpbdcloth.sketch.Launcher;
         description = "Real-time PBD/XPBD cloth. With no command, opens the sketch.",
         subcommands = {Main.Record.class, Main.BenchCommand.class, xpbdcloth.experiments.Experiments.class})
 public final class Main implements Callable<Integer> {
-    @Option(names = "--scene", description = "built-in scene (${COMPLETION-CANDIDATES}) or a preset file", defaultValue = "hanging",
-            completionCandidates = Scenes.class)
-    String scene;
+    /** What both the window and the recorder take: the scene, the layout, the size, the solver threads. */
+    static final class SketchOptions {
+        @Option(names = "--scene", description = "built-in scene (${COMPLETION-CANDIDATES}) or a preset file", defaultValue = "hanging",
+                completionCandidates = Scenes.class)
+        String scene;
 
-    @Option(names = "--side-by-side", description = "start with PBD left and XPBD right")
-    boolean sideBySide;
+        @Option(names = "--side-by-side", description = "PBD left and XPBD right")
+        boolean sideBySide;
 
-    @Option(names = "--size", description = "window size WxH in pixels", defaultValue = "1280x800")
-    String size;
+        @Option(names = "--size", description = "window or frame size WxH in pixels", defaultValue = "1280x800")
+        String size;
 
-    @Option(names = "--threads", description = "solver threads (coloured parallel solve; same result for any count)", defaultValue = "1")
-    int threads;
+        @Option(names = "--threads", description = "solver threads (coloured parallel solve; same result for any count)", defaultValue = "1")
+        int threads;
+
+        /** Validates the options (a bad scene, size or thread count fails here, with its message) and opens the sketch. */
+        void open(ClothApp.Recording recording) {
+            PresetLoader.byNameOrPath(scene);
+            int[] wh = parseSize(size);
+            xpbdcloth.sketch.SketchState.setThreads(threads);
+            Launcher.open(scene, sideBySide, recording, wh[0], wh[1]);
+        }
+    }
+
+    @CommandLine.Mixin
+    SketchOptions sketch = new SketchOptions();
 
     static final class Scenes extends java.util.ArrayList<String> {
         Scenes() { super(PresetLoader.BUILT_IN); }
     }
 
     public static void main(String[] args) {
-        int code = new CommandLine(new Main()).execute(args);
+        CommandLine cli = new CommandLine(new Main());
+        // Bad input (a broken preset, a bad size) is a message, not a stack trace.
+        cli.setExecutionExceptionHandler((e, line, parsed) -> {
+            if (!(e instanceof IllegalArgumentException)) throw e;
+            line.getErr().println("xpbd-cloth: " + e.getMessage());
+            return 2;
+        });
+        int code = cli.execute(args);
         // An open sketch keeps running on Processing's threads and exits when its window closes.
         if (!Launcher.opened()) System.exit(code);
     }
 
     @Override public Integer call() {
-        if (!displayAvailable("xpbd-cloth --scene " + scene)) return 2;
-        PresetLoader.byNameOrPath(scene); // a bad name or file fails here, with its message
-        int[] wh = parseSize(size);
-        xpbdcloth.sketch.SketchState.setThreads(threads);
-        Launcher.open(scene, sideBySide, null, wh[0], wh[1]);
+        if (!displayAvailable("xpbd-cloth --scene " + sketch.scene)) return 2;
+        sketch.open(null);
         return 0;
     }
 
@@ -75,8 +93,8 @@ public final class Main implements Callable<Integer> {
     @Command(name = "record", mixinStandardHelpOptions = true,
             description = "Renders a scene through the real P3D sketch at a fixed timestep and writes PNG frames.")
     static final class Record implements Callable<Integer> {
-        @Option(names = "--scene", description = "built-in scene or preset file", defaultValue = "hanging")
-        String scene;
+        @CommandLine.Mixin
+        SketchOptions sketch = new SketchOptions();
 
         @Option(names = "--frames", description = "number of frames (one 60 Hz frame each)", defaultValue = "120")
         int frames;
@@ -84,25 +102,14 @@ public final class Main implements Callable<Integer> {
         @Option(names = "--out", description = "folder for frame-0001.png, ... (default build/frames/<scene>)")
         File out;
 
-        @Option(names = "--side-by-side", description = "record PBD left and XPBD right")
-        boolean sideBySide;
-
-        @Option(names = "--size", description = "frame size WxH in pixels", defaultValue = "1280x720")
-        String size;
-
-        @Option(names = "--threads", description = "solver threads", defaultValue = "1")
-        int threads;
-
         @Override public Integer call() {
             if (frames < 1) throw new IllegalArgumentException("frames must be >= 1, was " + frames);
-            if (!displayAvailable("xpbd-cloth record --scene " + scene + " --frames " + frames)) return 2;
-            PresetLoader.byNameOrPath(scene);
-            String name = new File(scene).getName().replace(".json", "");
-            File folder = out != null ? out : new File("build/frames/" + name + (sideBySide ? "-side-by-side" : ""));
-            int[] wh = parseSize(size);
-            xpbdcloth.sketch.SketchState.setThreads(threads);
-            System.out.println("recording " + frames + " frames of " + scene + " into " + folder);
-            Launcher.open(scene, sideBySide, new ClothApp.Recording(folder, frames), wh[0], wh[1]);
+            if (!displayAvailable("xpbd-cloth record --scene " + sketch.scene + " --frames " + frames)) return 2;
+            PresetLoader.byNameOrPath(sketch.scene); // a broken preset fails before anything is written
+            String name = new File(sketch.scene).getName().replace(".json", "");
+            File folder = out != null ? out : new File("build/frames/" + name + (sketch.sideBySide ? "-side-by-side" : ""));
+            System.out.println("recording " + frames + " frames of " + sketch.scene + " into " + folder);
+            sketch.open(new ClothApp.Recording(folder, frames));
             return 0;
         }
     }
