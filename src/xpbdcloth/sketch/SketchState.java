@@ -83,6 +83,7 @@ public final class SketchState {
         double[] u = p.wind == null ? new double[] {2, 0, 1.5} : p.wind.velocity;
         windAngle = Math.atan2(u[2], u[0]);
         windSpeed = Math.hypot(u[0], u[2]);
+        closeRunning();
         main = fresh;
         left = right = null;
         if (sideBySide) buildPair();
@@ -108,6 +109,11 @@ public final class SketchState {
             s.setWind(windOn);
             s.wind().setVelocity(windSpeed * Math.cos(windAngle), 0, windSpeed * Math.sin(windAngle));
         }
+    }
+
+    /** Frees the solver threads of the scenes about to be replaced (a no-op on one thread). */
+    private void closeRunning() {
+        for (Scene s : new Scene[] {main, left, right}) if (s != null) s.simulation().close();
     }
 
     /** The scenes being stepped and drawn: one, or PBD and XPBD side by side. */
@@ -241,6 +247,7 @@ public final class SketchState {
     }
 
     public void toggleSideBySide() {
+        if (sideBySide) closeRunning();
         sideBySide = !sideBySide;
         if (sideBySide) buildPair();
         else { left = right = null; }
