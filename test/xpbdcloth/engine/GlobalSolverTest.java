@@ -62,7 +62,7 @@ class GlobalSolverTest {
     static double chainError(SolverType type, int iterations) {
         int links = 40;
         double alpha = 1e-4, m = 0.01, L = 0.05;
-        SolverSettings s = new SolverSettings().mode(ConstraintMode.XPBD).iterations(iterations).timestep(1 / 60.0).solver(type).pcgTolerance(1e-10);
+        SolverSettings s = new SolverSettings().mode(ConstraintMode.XPBD).iterations(iterations).timestep(1 / 60.0).solver(type).pcgTolerance(1e-10).pcgMaxIterations(500);
         Simulation sim = Rigs.chain(links, m, L, s, 1, alpha);
         int steps = 1200;
         for (int k = 0; k < steps; k++) {
@@ -108,7 +108,7 @@ class GlobalSolverTest {
             for (int col = 0; col < 10; col++) b.pin(0, col);
             Cloth c = b.build();
             Simulation sim = c.simulation(new SolverSettings().mode(ConstraintMode.XPBD).timestep(1 / 60.0)
-                    .solver(types[k]).iterations(k == 0 ? 300 : 4).pcgTolerance(1e-10));
+                    .solver(types[k]).iterations(k == 0 ? 300 : 4).pcgTolerance(1e-10).pcgMaxIterations(500));
             for (int s = 0; s < 1200; s++) {
                 double u = Math.min(1, (s + 1.0) / 720);
                 sim.settings().gravity(0, -Rigs.G * u * u * (3 - 2 * u), 0);
