@@ -29,7 +29,7 @@ import xpbdcloth.engine.ConstraintMode;
  */
 public final class PresetLoader {
     /** The presets that ship with the project, in the order the sketch offers them. */
-    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere");
+    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain");
 
     static final int MAX_RESOLUTION = 512;
 
@@ -140,18 +140,35 @@ public final class PresetLoader {
             double totalMass = tm == null ? Double.NaN : number(tm, 1e-9, 1e6);
             List<int[]> pins = new ArrayList<>();
             Node ps = optional(n, "pins");
-            if (ps != null) for (Node p : array(ps)) pins.add(pin(p, columns, rows));
+            if (ps != null) for (Node p : array(ps)) {
+                List<int[]> edge = edge(p, columns, rows);
+                if (edge != null) pins.addAll(edge);
+                else pins.add(pin(p, columns, rows, ", top-edge, bottom-edge, left-edge, right-edge"));
+            }
             return new Preset.Cloth(columns, rows, width, height, plane, origin, arealDensity, totalMass, pins);
         }
 
-        int[] pin(Node p, int columns, int rows) {
+        /** Every particle of a named edge ("top-edge", …), or null if p names no edge. */
+        List<int[]> edge(Node p, int columns, int rows) {
+            if (!p.json.isTextual()) return null;
+            List<int[]> out = new ArrayList<>();
+            switch (p.json.asText()) {
+                case "top-edge": for (int c = 0; c < columns; c++) out.add(new int[] {0, c}); return out;
+                case "bottom-edge": for (int c = 0; c < columns; c++) out.add(new int[] {rows - 1, c}); return out;
+                case "left-edge": for (int r = 0; r < rows; r++) out.add(new int[] {r, 0}); return out;
+                case "right-edge": for (int r = 0; r < rows; r++) out.add(new int[] {r, columns - 1}); return out;
+                default: return null;
+            }
+        }
+
+        int[] pin(Node p, int columns, int rows, String moreNames) {
             if (p.json.isTextual()) {
                 switch (p.json.asText()) {
                     case "top-left": return new int[] {0, 0};
                     case "top-right": return new int[] {0, columns - 1};
                     case "bottom-left": return new int[] {rows - 1, 0};
                     case "bottom-right": return new int[] {rows - 1, columns - 1};
-                    default: throw fail(p.path, "must be [row, col] or one of top-left, top-right, bottom-left, bottom-right, was \"" + p.json.asText() + "\"");
+                    default: throw fail(p.path, "must be [row, col] or one of top-left, top-right, bottom-left, bottom-right" + moreNames + ", was \"" + p.json.asText() + "\"");
                 }
             }
             if (!p.json.isArray() || p.json.size() != 2) throw fail(p.path, "must be [row, col] or a corner name, was " + describe(p.json));
@@ -237,7 +254,7 @@ public final class PresetLoader {
 
         Preset.PinMotion pinMotion(Node n, Preset.Cloth cloth) {
             object(n, Set.of("pin", "displacement", "start", "duration"));
-            int[] pin = pin(required(n, "pin"), cloth.columns, cloth.rows);
+            int[] pin = pin(required(n, "pin"), cloth.columns, cloth.rows, "");
             boolean pinned = false;
             for (int[] p : cloth.pins) pinned |= p[0] == pin[0] && p[1] == pin[1];
             if (!pinned) throw fail(n.child("pin"), "particle [" + pin[0] + ", " + pin[1] + "] must also be listed in cloth.pins");

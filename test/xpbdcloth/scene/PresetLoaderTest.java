@@ -27,6 +27,15 @@ class PresetLoaderTest {
         assertEquals(-9.81, p.solver.gravity[1], "default gravity");
     }
 
+    /** An edge name pins every particle along that edge. */
+    @Test
+    void edgeNamesPinWholeEdges() {
+        Preset p = PresetLoader.parse("t.json", valid().replace("[\"top-left\"]", "[\"top-edge\", \"left-edge\"]"));
+        assertEquals(8, p.cloth.pins.size(), "4 along the top, 4 down the left (the shared corner twice)");
+        for (int c = 0; c < 4; c++) assertArrayEquals(new int[] {0, c}, p.cloth.pins.get(c));
+        for (int r = 0; r < 4; r++) assertArrayEquals(new int[] {r, 0}, p.cloth.pins.get(4 + r));
+    }
+
     @ParameterizedTest(name = "{0}")
     @CsvSource(delimiter = '|', value = {
         "truncated            | \"dt\": 0.02 } }                    | \"dt\": 0.02                     | (syntax)             | not valid JSON",
@@ -42,6 +51,7 @@ class PresetLoaderTest {
         "bad mode             | \"mode\": \"XPBD\"                    | \"mode\": \"FEM\"                  | solver.mode          | must be one of pbd, xpbd, was \"FEM\"",
         "both masses          | \"arealDensity\": 0.2               | \"arealDensity\": 0.2, \"totalMass\": 1 | cloth             | needs exactly one of arealDensity",
         "dt zero              | \"dt\": 0.02                        | \"dt\": 0                        | solver.dt            | must be > 0, was 0",
+        "unknown pin name     | \"pins\": [\"top-left\"]              | \"pins\": [\"top\"]                | cloth.pins[0]        | one of top-left, top-right, bottom-left, bottom-right, top-edge, bottom-edge, left-edge, right-edge, was \"top\"",
         "duplicate key        | \"rows\": 4                         | \"rows\": 4, \"rows\": 5           | (syntax)             | Duplicate field",
     })
     void brokenPresetNamesFieldAndProblem(String kind, String from, String to, String field, String problem) {
@@ -63,7 +73,7 @@ class PresetLoaderTest {
         assertEquals("is a directory, not a preset file", e.problem());
         e = assertThrows(PresetException.class, () -> PresetLoader.load(dir.resolve("nope.json")));
         assertEquals("does not exist", e.problem());
-        e = assertThrows(PresetException.class, () -> PresetLoader.byNameOrPath("curtain"));
+        e = assertThrows(PresetException.class, () -> PresetLoader.byNameOrPath("no-such-scene"));
         assertEquals("does not exist", e.problem());
     }
 
