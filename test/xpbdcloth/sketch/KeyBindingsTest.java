@@ -42,10 +42,10 @@ class KeyBindingsTest {
         String readme = java.nio.file.Files.readString(java.nio.file.Path.of("README.md"));
         for (KeyBinding b : KeyBindings.all()) {
             String key = b.key == ' ' ? "space" : String.valueOf(b.key);
-            if (Character.isDigit(b.key)) continue; // listed as one row, 1–5
+            if (Character.isDigit(b.key)) continue; // listed as one row, 1–6
             assertTrue(readme.contains("| `" + key + "` | " + b.help + " |"), "README lists key " + key);
         }
-        assertTrue(readme.contains("| `1`–`5` |"));
+        assertTrue(readme.contains("| `1`–`6` |"));
     }
 
     @Test

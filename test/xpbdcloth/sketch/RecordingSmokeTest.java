@@ -22,7 +22,7 @@ class RecordingSmokeTest {
     static final int FRAMES = 20;
 
     @ParameterizedTest
-    @ValueSource(strings = {"hanging", "corners", "sphere-pass", "rope", "spinning-sphere"})
+    @ValueSource(strings = {"hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain"})
     void sceneRendersAndMoves(String scene, @org.junit.jupiter.api.io.TempDir Path out) throws Exception {
         String display = System.getenv("DISPLAY");
         boolean ci = "true".equals(System.getenv("CI"));
