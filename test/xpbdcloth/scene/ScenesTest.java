@@ -26,7 +26,7 @@ class ScenesTest {
 
     /**
      * curtain: with the preset's 2 × 2 sweeps per step Gauss–Seidel cannot carry the weight of 32 rows,
-     * so the curtain stretches (its mean strain stays above 3 % over 6 s); solving the whole system
+     * so the curtain stretches (its mean strain stays above 3 % from 1 s to 6 s); solving the whole system
      * (either global solver, same 2 × 2 iterations) holds it within 0.05 %, with no NaN.
      */
     @Test
