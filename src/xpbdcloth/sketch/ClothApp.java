@@ -29,11 +29,14 @@ public final class ClothApp {
     public static final class Recording {
         final File folder;
         final int frames;
+        /** Where to write the frames as one animated GIF too, or null. */
+        final File gif;
 
-        public Recording(File folder, int frames) {
+        public Recording(File folder, int frames, File gif) {
             if (frames < 1) throw new IllegalArgumentException("frames must be >= 1, was " + frames);
             this.folder = folder;
             this.frames = frames;
+            this.gif = gif;
         }
     }
 
@@ -174,8 +177,18 @@ public final class ClothApp {
             if (recorded >= recording.frames) {
                 System.out.printf(java.util.Locale.ROOT, "recorded %d frames: sim %.2f ms/step, render %.2f ms/frame, %.0f bytes allocated/frame (smoothed), of which %.0f in the cloth mesh and %.0f in the HUD (text)%n",
                         recorded, simMs, renderMs, allocatedPerFrame, meshAllocated, hudAllocated);
+                if (recording.gif != null) writeGif();
                 app.exit();
             }
+        }
+    }
+
+    private void writeGif() {
+        try {
+            int used = AnimatedGif.write(recording.folder, recorded, recording.gif);
+            System.out.printf("wrote %s (%d frames, %d bytes)%n", recording.gif, used, recording.gif.length());
+        } catch (java.io.IOException e) {
+            System.err.println("no GIF: " + e.getMessage() + " (the PNG frames are in " + recording.folder + ")");
         }
     }
 

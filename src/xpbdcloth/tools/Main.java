@@ -91,7 +91,7 @@ public final class Main implements Callable<Integer> {
     }
 
     @Command(name = "record", mixinStandardHelpOptions = true,
-            description = "Renders a scene through the real P3D sketch at a fixed timestep and writes PNG frames.")
+            description = "Renders a scene through the real P3D sketch at a fixed timestep and writes PNG frames (and optionally a GIF).")
     static final class Record implements Callable<Integer> {
         @CommandLine.Mixin
         SketchOptions sketch = new SketchOptions();
@@ -102,6 +102,9 @@ public final class Main implements Callable<Integer> {
         @Option(names = "--out", description = "folder for frame-0001.png, ... (default build/frames/<scene>)")
         File out;
 
+        @Option(names = "--gif", description = "also write the frames as one looping GIF (every second frame, half size) to this file")
+        File gif;
+
         @Override public Integer call() {
             if (frames < 1) throw new IllegalArgumentException("frames must be >= 1, was " + frames);
             if (!displayAvailable("xpbd-cloth record --scene " + sketch.scene + " --frames " + frames)) return 2;
@@ -109,7 +112,7 @@ public final class Main implements Callable<Integer> {
             String name = new File(sketch.scene).getName().replace(".json", "");
             File folder = out != null ? out : new File("build/frames/" + name + (sketch.sideBySide ? "-side-by-side" : ""));
             System.out.println("recording " + frames + " frames of " + sketch.scene + " into " + folder);
-            sketch.open(new ClothApp.Recording(folder, frames));
+            sketch.open(new ClothApp.Recording(folder, frames, gif));
             return 0;
         }
     }

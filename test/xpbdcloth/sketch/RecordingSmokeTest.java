@@ -46,6 +46,28 @@ class RecordingSmokeTest {
         assertTrue(changed(a, b) > 0.002, scene + ": the picture changes between first and last frame");
     }
 
+    /** --gif: every second frame at half size, 30 ms apart, looping; the animation moves. */
+    @org.junit.jupiter.api.Test
+    void recordingWritesAnAnimatedGif(@org.junit.jupiter.api.io.TempDir Path out) throws Exception {
+        String display = System.getenv("DISPLAY");
+        if (!"true".equals(System.getenv("CI"))) assumeTrue(display != null && !display.isEmpty(), "no display: run the tests under xvfb-run");
+        Path launcher = Path.of(System.getProperty("xpbd.install", "build/install/xpbd-cloth"), "bin", "xpbd-cloth");
+        Path gif = out.resolve("rope.gif");
+        Process p = new ProcessBuilder(launcher.toString(), "record", "--scene", "rope", "--frames", String.valueOf(FRAMES),
+                "--out", out.toString(), "--size", "640x400", "--gif", gif.toString())
+                .redirectErrorStream(true).redirectOutput(out.resolve("log.txt").toFile()).start();
+        assertTrue(p.waitFor(120, TimeUnit.SECONDS), "recording finished within 2 minutes");
+        String log = Files.readString(out.resolve("log.txt"));
+        assertEquals(0, p.exitValue(), "exit code; log:\n" + log);
+        com.madgag.gif.fmsware.GifDecoder d = new com.madgag.gif.fmsware.GifDecoder();
+        assertEquals(com.madgag.gif.fmsware.GifDecoder.STATUS_OK, d.read(gif.toString()), "a readable GIF; log:\n" + log);
+        assertEquals(FRAMES / 2, d.getFrameCount(), "every second frame");
+        assertEquals(320, d.getFrameSize().width, "half size");
+        assertEquals(30, d.getDelay(0), "ms per frame");
+        assertEquals(0, d.getLoopCount(), "loops forever");
+        assertTrue(changed(d.getFrame(0), d.getFrame(FRAMES / 2 - 1)) > 0.002, "the rope moves in the GIF");
+    }
+
     /** Share of pixels in the cloth's front (blue) or back (orange) hue, shaded by any light level. */
     static double clothShare(BufferedImage img) {
         long hits = 0;
