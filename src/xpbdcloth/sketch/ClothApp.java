@@ -19,10 +19,10 @@ import xpbdcloth.scene.Scene;
  * The sketch: hooks itself into any PApplet (the Processing IDE's .pde or the launcher) through
  * {@code registerMethod}, like a Processing library, so the .pde stays three lines long.
  *
- * <p>Interactive runs step the simulation in real time with an accumulator (a frame runs as many steps
- * of dt as the wall clock asks for, at most 8), which is what makes the frame-rate trap reproducible:
- * dt = 1/120 s means two PBD steps per 60 Hz frame. Recording runs a fixed number of steps per frame,
- * so frames are deterministic.
+ * <p>Interactive runs step the simulation in real time ({@link FramePacer}: as many steps of dt as the
+ * wall clock asks for, slow motion when steps are too costly), which is what makes the frame-rate trap
+ * reproducible: dt = 1/120 s means two PBD steps per 60 Hz frame. Recording runs a fixed number of
+ * steps per frame, so frames are deterministic.
  */
 public final class ClothApp {
     /** Where and how long to record; null for an interactive session. */
@@ -40,7 +40,6 @@ public final class ClothApp {
         }
     }
 
-    static final int MAX_STEPS_PER_FRAME = 8;
     static final double GRAB_PIXELS = 30;
 
     private final PApplet app;
@@ -50,7 +49,9 @@ public final class ClothApp {
     private final Hud hud = new Hud();
     private final Recording recording;
     private int recorded;
-    private double accumulator;
+    private final FramePacer pacer = new FramePacer();
+    /** Cost of one step in the last frame that stepped, ms (reacts at once, unlike the HUD's average). */
+    private double lastStepMs;
     private long lastNanos;
     private double simMs, renderMs, allocatedPerFrame, meshAllocated, hudAllocated;
     private final com.sun.management.ThreadMXBean threadBean =
@@ -127,7 +128,10 @@ public final class ClothApp {
             hud.record(state.running());
         }
         long t1 = System.nanoTime();
-        if (steps > 0) simMs = 0.9 * simMs + 0.1 * ((t1 - t0) / 1e6 / steps);
+        if (steps > 0) {
+            lastStepMs = (t1 - t0) / 1e6 / steps;
+            simMs = 0.9 * simMs + 0.1 * lastStepMs;
+        }
         if (state.preset() != framedPreset || state.sideBySide() != framedSideBySide) {
             frame();
             hud.clear();
@@ -166,7 +170,7 @@ public final class ClothApp {
         }
         long h0 = threadBean.getCurrentThreadAllocatedBytes();
         OrbitCamera.beginHud(g);
-        hud.draw(g, state, simMs, renderMs, allocatedPerFrame, app.frameRate);
+        hud.draw(g, state, simMs, renderMs, allocatedPerFrame, app.frameRate, pacer.slowMotion());
         OrbitCamera.endHud(g);
         hudAllocated = 0.9 * hudAllocated + 0.1 * (threadBean.getCurrentThreadAllocatedBytes() - h0);
         renderMs = 0.9 * renderMs + 0.1 * ((System.nanoTime() - t1) / 1e6);
@@ -192,16 +196,15 @@ public final class ClothApp {
         }
     }
 
-    /** Real time with an accumulator when interactive; a fixed count (60 Hz frames) when recording. */
+    /** Real time (slow motion if steps cost too much) when interactive; a fixed count (60 Hz frames) when recording. */
     private int stepsThisFrame(double frameSeconds) {
         double dt = state.dt();
         if (recording != null) return Math.max(1, (int) Math.round((1 / 60.0) / dt));
-        accumulator += frameSeconds;
-        int steps = (int) Math.floor(accumulator / dt);
-        accumulator -= steps * dt;
-        if (steps > MAX_STEPS_PER_FRAME) { steps = MAX_STEPS_PER_FRAME; accumulator = 0; }
-        if (state.paused) accumulator = 0;
-        return state.paused ? (state.pendingSteps > 0 ? 1 : 0) : steps;
+        if (state.paused) {
+            pacer.reset();
+            return state.pendingSteps > 0 ? 1 : 0;
+        }
+        return pacer.steps(frameSeconds, dt, lastStepMs);
     }
 
     /** File chooser callback ('l'); a broken file keeps the current scene and shows why. */

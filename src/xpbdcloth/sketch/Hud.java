@@ -46,9 +46,10 @@ final class Hud {
     private SketchState formattedFor;
     static final int FORMAT_EVERY = 10;
 
-    void draw(PGraphics g, SketchState s, double simMs, double renderMs, double bytesPerFrame, double fps) {
+    void draw(PGraphics g, SketchState s, double simMs, double renderMs, double bytesPerFrame, double fps, boolean slowMotion) {
         if (++framesSinceFormat >= FORMAT_EVERY || formattedFor != s || s.message() != lastMessage) {
-            lines = format(s, simMs, renderMs, bytesPerFrame, fps);
+            lines = format(s, simMs, renderMs, bytesPerFrame, fps, slowMotion);
+            linesWidth = -1;
             framesSinceFormat = 0;
             formattedFor = s;
             lastMessage = s.message();
@@ -57,8 +58,10 @@ final class Hud {
     }
 
     private String lastMessage;
+    /** Widths of the text panels in pixels, measured when their text changes (-1: not yet). */
+    private float linesWidth = -1, helpWidth = -1;
 
-    private String[] format(SketchState s, double simMs, double renderMs, double bytesPerFrame, double fps) {
+    private String[] format(SketchState s, double simMs, double renderMs, double bytesPerFrame, double fps, boolean slowMotion) {
         List<Scene> running = s.running();
         Simulation sim = running.get(0).simulation();
         ConstraintFamily fam = s.shownFamily();
@@ -75,7 +78,8 @@ final class Hud {
                 fmt("family %s", famName),
                 fmt("  PBD  k %.2f  ->  k' %.4f %s", km[0], kPrime, s.mullerCorrection() ? "(Müller, n=" + s.iterations() + ")" : "(raw k)"),
                 fmt("  XPBD alpha %.2e m/N  ->  1/alpha %s", km[1], km[1] == 0 ? "infinite (hard)" : fmt("%.2e N/m", 1 / km[1])),
-                fmt("sim %.2f ms/step   render %.2f ms   %.0f fps   %.1f kB allocated/frame", simMs, renderMs, fps, bytesPerFrame / 1024),
+                fmt("sim %.2f ms/step   render %.2f ms   %.0f fps   %.1f kB allocated/frame%s", simMs, renderMs, fps, bytesPerFrame / 1024,
+                        slowMotion ? "   SLOW MOTION" : ""),
                 fmt("particles %d   constraints %d", sim.particles().count() * running.size(), constraints),
                 fmt("strain mean %.2f %%  max %.2f %%   KE %.2e J   max link force %.3f N",
                         100 * Metrics.meanStrain(sim, ConstraintFamily.STRUCTURAL), 100 * Metrics.maxStrain(sim, ConstraintFamily.STRUCTURAL),
@@ -91,7 +95,11 @@ final class Hud {
         double[] km = s.material(fam);
         g.noStroke();
         g.fill(0, 150);
-        g.rect(8, 8, 560, 18 * lines.length + 12, 6);
+        if (linesWidth < 0) {
+            for (String line : lines) linesWidth = Math.max(linesWidth, g.textWidth(line));
+            linesWidth = 40 * (float) Math.ceil(linesWidth / 40); // steps, so the panel does not twitch with the numbers
+        }
+        g.rect(8, 8, linesWidth + 16, 18 * lines.length + 12, 6);
         g.textAlign(PConstants.LEFT, PConstants.TOP);
         g.fill(235);
         for (int i = 0; i < lines.length; i++) g.text(lines[i], 16, 14 + 18 * i);
@@ -149,7 +157,12 @@ final class Hud {
         List<KeyBinding> keys = KeyBindings.all();
         String[] mouse = {"left-drag  rotate", "right-drag / wheel  zoom", "middle-drag (Meta+left)  pan",
                 "Shift+drag  lock axis", "double-click  reset view", "Ctrl+left-drag  grab the cloth"};
-        int lineH = 16, w = 380, h = lineH * (keys.size() + mouse.length + 3) + 12;
+        if (helpWidth < 0) {
+            for (KeyBinding k : keys) helpWidth = Math.max(helpWidth, 50 + g.textWidth(k.help));
+            for (String m : mouse) helpWidth = Math.max(helpWidth, g.textWidth(m));
+        }
+        int lineH = 16, h = lineH * (keys.size() + mouse.length + 3) + 12;
+        float w = helpWidth + 20;
         float x = g.width - w - 10, y = 10;
         g.noStroke();
         g.fill(0, 160);
