@@ -140,43 +140,36 @@ public final class PresetLoader {
             double totalMass = tm == null ? Double.NaN : number(tm, 1e-9, 1e6);
             List<int[]> pins = new ArrayList<>();
             Node ps = optional(n, "pins");
-            if (ps != null) for (Node p : array(ps)) {
-                List<int[]> edge = edge(p, columns, rows);
-                if (edge != null) pins.addAll(edge);
-                else pins.add(pin(p, columns, rows, ", top-edge, bottom-edge, left-edge, right-edge"));
-            }
+            if (ps != null) for (Node p : array(ps)) pins.addAll(pinned(p, columns, rows));
             return new Preset.Cloth(columns, rows, width, height, plane, origin, arealDensity, totalMass, pins);
         }
 
-        /** Every particle of a named edge ("top-edge", …), or null if p names no edge. */
-        List<int[]> edge(Node p, int columns, int rows) {
-            if (!p.json.isTextual()) return null;
-            List<int[]> out = new ArrayList<>();
-            switch (p.json.asText()) {
-                case "top-edge": for (int c = 0; c < columns; c++) out.add(new int[] {0, c}); return out;
-                case "bottom-edge": for (int c = 0; c < columns; c++) out.add(new int[] {rows - 1, c}); return out;
-                case "left-edge": for (int r = 0; r < rows; r++) out.add(new int[] {r, 0}); return out;
-                case "right-edge": for (int r = 0; r < rows; r++) out.add(new int[] {r, columns - 1}); return out;
-                default: return null;
-            }
-        }
+        static final String PIN_NAMES = "top-left, top-right, bottom-left, bottom-right, top-edge, bottom-edge, left-edge, right-edge";
 
-        int[] pin(Node p, int columns, int rows, String moreNames) {
+        /** The particles a pin stands for: [row, col] or a corner is one particle, an edge all along it. */
+        List<int[]> pinned(Node p, int columns, int rows) {
+            List<int[]> out = new ArrayList<>();
             if (p.json.isTextual()) {
                 switch (p.json.asText()) {
-                    case "top-left": return new int[] {0, 0};
-                    case "top-right": return new int[] {0, columns - 1};
-                    case "bottom-left": return new int[] {rows - 1, 0};
-                    case "bottom-right": return new int[] {rows - 1, columns - 1};
-                    default: throw fail(p.path, "must be [row, col] or one of top-left, top-right, bottom-left, bottom-right" + moreNames + ", was \"" + p.json.asText() + "\"");
+                    case "top-left": out.add(new int[] {0, 0}); break;
+                    case "top-right": out.add(new int[] {0, columns - 1}); break;
+                    case "bottom-left": out.add(new int[] {rows - 1, 0}); break;
+                    case "bottom-right": out.add(new int[] {rows - 1, columns - 1}); break;
+                    case "top-edge": for (int c = 0; c < columns; c++) out.add(new int[] {0, c}); break;
+                    case "bottom-edge": for (int c = 0; c < columns; c++) out.add(new int[] {rows - 1, c}); break;
+                    case "left-edge": for (int r = 0; r < rows; r++) out.add(new int[] {r, 0}); break;
+                    case "right-edge": for (int r = 0; r < rows; r++) out.add(new int[] {r, columns - 1}); break;
+                    default: throw fail(p.path, "must be [row, col] or one of " + PIN_NAMES + ", was \"" + p.json.asText() + "\"");
                 }
+                return out;
             }
-            if (!p.json.isArray() || p.json.size() != 2) throw fail(p.path, "must be [row, col] or a corner name, was " + describe(p.json));
+            if (!p.json.isArray() || p.json.size() != 2) throw fail(p.path, "must be [row, col] or a corner or edge name, was " + describe(p.json));
             Node r = new Node(p.json.get(0), p.path + "[0]"), c = new Node(p.json.get(1), p.path + "[1]");
             int row = integer(r, Integer.MIN_VALUE, Integer.MAX_VALUE), col = integer(c, Integer.MIN_VALUE, Integer.MAX_VALUE);
             if (row < 0 || row >= rows || col < 0 || col >= columns)
                 throw fail(p.path, "pin [" + row + ", " + col + "] is outside the " + rows + "x" + columns + " grid (rows x columns)");
-            return new int[] {row, col};
+            out.add(new int[] {row, col});
+            return out;
         }
 
         Map<ConstraintFamily, Preset.Material> families(Node n) {
@@ -254,7 +247,10 @@ public final class PresetLoader {
 
         Preset.PinMotion pinMotion(Node n, Preset.Cloth cloth) {
             object(n, Set.of("pin", "displacement", "start", "duration"));
-            int[] pin = pin(required(n, "pin"), cloth.columns, cloth.rows, "");
+            Node pn = required(n, "pin");
+            List<int[]> named = pinned(pn, cloth.columns, cloth.rows);
+            if (named.size() != 1) throw fail(pn.path, "must name one particle ([row, col] or a corner), was \"" + pn.json.asText() + "\"");
+            int[] pin = named.get(0);
             boolean pinned = false;
             for (int[] p : cloth.pins) pinned |= p[0] == pin[0] && p[1] == pin[1];
             if (!pinned) throw fail(n.child("pin"), "particle [" + pin[0] + ", " + pin[1] + "] must also be listed in cloth.pins");

@@ -20,15 +20,16 @@ final class AnimatedGif {
 
     private AnimatedGif() {}
 
-    /** Writes frame-0001.png … frame-{count}.png of {@code folder} to {@code gif}; returns the frames used. */
-    static int write(File folder, int count, File gif) throws IOException {
+    /** Writes the recording's first {@code count} frames to its GIF file; returns the frames used. */
+    static int write(ClothApp.Recording recording, int count) throws IOException {
+        File gif = recording.gif;
         AnimatedGifEncoder encoder = new AnimatedGifEncoder();
         if (!encoder.start(gif.getPath())) throw new IOException("cannot write " + gif);
         encoder.setRepeat(0);
         encoder.setDelay(DELAY_MS);
         int used = 0;
         for (int i = 1; i <= count; i += FRAME_STRIDE) {
-            File png = new File(folder, String.format("frame-%04d.png", i));
+            File png = recording.frame(i);
             BufferedImage frame = ImageIO.read(png);
             if (frame == null) throw new IOException("not an image: " + png);
             encoder.addFrame(scaled(frame));

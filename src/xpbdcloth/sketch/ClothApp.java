@@ -38,6 +38,9 @@ public final class ClothApp {
             this.frames = frames;
             this.gif = gif;
         }
+
+        /** Frame i (from 1) of the recording: frame-0001.png, … */
+        File frame(int i) { return new File(folder, String.format("frame-%04d.png", i)); }
     }
 
     static final double GRAB_PIXELS = 30;
@@ -177,7 +180,7 @@ public final class ClothApp {
         allocatedPerFrame = 0.9 * allocatedPerFrame + 0.1 * (threadBean.getCurrentThreadAllocatedBytes() - allocatedBefore);
 
         if (recording != null) {
-            app.saveFrame(new File(recording.folder, String.format("frame-%04d.png", ++recorded)).getPath());
+            app.saveFrame(recording.frame(++recorded).getPath());
             if (recorded >= recording.frames) {
                 System.out.printf(java.util.Locale.ROOT, "recorded %d frames: sim %.2f ms/step, render %.2f ms/frame, %.0f bytes allocated/frame (smoothed), of which %.0f in the cloth mesh and %.0f in the HUD (text)%n",
                         recorded, simMs, renderMs, allocatedPerFrame, meshAllocated, hudAllocated);
@@ -189,7 +192,7 @@ public final class ClothApp {
 
     private void writeGif() {
         try {
-            int used = AnimatedGif.write(recording.folder, recorded, recording.gif);
+            int used = AnimatedGif.write(recording, recorded);
             System.out.printf("wrote %s (%d frames, %d bytes)%n", recording.gif, used, recording.gif.length());
         } catch (java.io.IOException e) {
             System.err.println("no GIF: " + e.getMessage() + " (the PNG frames are in " + recording.folder + ")");

@@ -33,6 +33,6 @@ final class FramePacer {
     /** Whether the last frame ran fewer steps than the wall clock asked for. */
     boolean slowMotion() { return slowMotion; }
 
-    /** Forgets time owed (pause, scene change). */
+    /** Forgets time owed (while paused). */
     void reset() { accumulator = 0; }
 }

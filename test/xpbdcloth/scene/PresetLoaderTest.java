@@ -36,6 +36,16 @@ class PresetLoaderTest {
         for (int r = 0; r < 4; r++) assertArrayEquals(new int[] {r, 0}, p.cloth.pins.get(4 + r));
     }
 
+    /** A pin motion moves one particle, so an edge name is refused there with its reason. */
+    @Test
+    void pinMotionNeedsOneParticle() {
+        String text = valid().replace("\"dt\": 0.02 } }",
+                "\"dt\": 0.02 }, \"pinMotions\": [{ \"pin\": \"top-edge\", \"displacement\": [0, 0, 0], \"start\": 0, \"duration\": 1 }] }");
+        PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse("bad.json", text));
+        assertEquals("pinMotions[0].pin", e.field(), e.getMessage());
+        assertTrue(e.problem().startsWith("must name one particle"), e.getMessage());
+    }
+
     @ParameterizedTest(name = "{0}")
     @CsvSource(delimiter = '|', value = {
         "truncated            | \"dt\": 0.02 } }                    | \"dt\": 0.02                     | (syntax)             | not valid JSON",

@@ -21,21 +21,28 @@ import org.junit.jupiter.params.provider.ValueSource;
 class RecordingSmokeTest {
     static final int FRAMES = 20;
 
-    @ParameterizedTest
-    @ValueSource(strings = {"hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain"})
-    void sceneRendersAndMoves(String scene, @org.junit.jupiter.api.io.TempDir Path out) throws Exception {
+    /** Runs the installed launcher's record command into {@code out}; returns its log (stdout and stderr). */
+    static String record(Path out, String scene, String... extra) throws Exception {
         String display = System.getenv("DISPLAY");
         boolean ci = "true".equals(System.getenv("CI"));
         if (!ci) assumeTrue(display != null && !display.isEmpty(), "no display: run the tests under xvfb-run");
         assertNotNull(display, "CI must run the tests under xvfb-run");
-        String install = System.getProperty("xpbd.install", "build/install/xpbd-cloth");
-        Path launcher = Path.of(install, "bin", "xpbd-cloth");
+        Path launcher = Path.of(System.getProperty("xpbd.install", "build/install/xpbd-cloth"), "bin", "xpbd-cloth");
         assertTrue(Files.isExecutable(launcher), "installed launcher at " + launcher);
-        Process p = new ProcessBuilder(launcher.toString(), "record", "--scene", scene, "--frames", String.valueOf(FRAMES),
-                "--out", out.toString(), "--size", "640x400").redirectErrorStream(true).redirectOutput(out.resolve("log.txt").toFile()).start();
+        java.util.List<String> cmd = new java.util.ArrayList<>(java.util.List.of(launcher.toString(), "record", "--scene", scene,
+                "--frames", String.valueOf(FRAMES), "--out", out.toString(), "--size", "640x400"));
+        cmd.addAll(java.util.List.of(extra));
+        Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(out.resolve("log.txt").toFile()).start();
         assertTrue(p.waitFor(120, TimeUnit.SECONDS), "recording finished within 2 minutes");
         String log = Files.readString(out.resolve("log.txt"));
         assertEquals(0, p.exitValue(), "exit code; log:\n" + log);
+        return log;
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain"})
+    void sceneRendersAndMoves(String scene, @org.junit.jupiter.api.io.TempDir Path out) throws Exception {
+        String log = record(out, scene);
         File first = out.resolve("frame-0001.png").toFile(), last = out.resolve(String.format("frame-%04d.png", FRAMES)).toFile();
         assertTrue(first.isFile() && last.isFile(), "frames written; log:\n" + log);
         BufferedImage a = ImageIO.read(first), b = ImageIO.read(last);
@@ -49,16 +56,8 @@ class RecordingSmokeTest {
     /** --gif: every second frame at half size, 30 ms apart, looping; the animation moves. */
     @org.junit.jupiter.api.Test
     void recordingWritesAnAnimatedGif(@org.junit.jupiter.api.io.TempDir Path out) throws Exception {
-        String display = System.getenv("DISPLAY");
-        if (!"true".equals(System.getenv("CI"))) assumeTrue(display != null && !display.isEmpty(), "no display: run the tests under xvfb-run");
-        Path launcher = Path.of(System.getProperty("xpbd.install", "build/install/xpbd-cloth"), "bin", "xpbd-cloth");
         Path gif = out.resolve("rope.gif");
-        Process p = new ProcessBuilder(launcher.toString(), "record", "--scene", "rope", "--frames", String.valueOf(FRAMES),
-                "--out", out.toString(), "--size", "640x400", "--gif", gif.toString())
-                .redirectErrorStream(true).redirectOutput(out.resolve("log.txt").toFile()).start();
-        assertTrue(p.waitFor(120, TimeUnit.SECONDS), "recording finished within 2 minutes");
-        String log = Files.readString(out.resolve("log.txt"));
-        assertEquals(0, p.exitValue(), "exit code; log:\n" + log);
+        String log = record(out, "rope", "--gif", gif.toString());
         com.madgag.gif.fmsware.GifDecoder d = new com.madgag.gif.fmsware.GifDecoder();
         assertEquals(com.madgag.gif.fmsware.GifDecoder.STATUS_OK, d.read(gif.toString()), "a readable GIF; log:\n" + log);
         assertEquals(FRAMES / 2, d.getFrameCount(), "every second frame");
