@@ -23,6 +23,8 @@ import java.util.List;
  */
 final class AggregationMultigrid {
     static final int COARSEST = 64;
+    /** A Cholesky pivot below this fraction of its diagonal counts as zero (semi-definite A). */
+    static final double PIVOT_TOLERANCE = 1e-12;
     static final double STRENGTH = 0.25;
     /** Gauss–Seidel sweeps before and after the coarse correction. */
     static final int SMOOTHING = 2;
@@ -148,7 +150,6 @@ final class AggregationMultigrid {
 
     /** The pattern of Pᵀ A P for a binary P given by agg. */
     private static SparseMatrix galerkinPattern(SparseMatrix a, int[] agg, int coarse) {
-        List<int[]> rows = new ArrayList<>();
         int[][] members = new int[coarse][];
         int[] count = new int[coarse];
         for (int x : agg) count[x]++;
@@ -177,7 +178,6 @@ final class AggregationMultigrid {
         }
         int[] col = new int[cols.size()];
         for (int q = 0; q < col.length; q++) col[q] = cols.get(q);
-        rows.clear();
         return new SparseMatrix(coarse, rowStart, col);
     }
 
@@ -188,6 +188,12 @@ final class AggregationMultigrid {
         return map;
     }
 
+    /**
+     * Dense Cholesky of the coarsest operator. With hard constraints (α = 0) in surplus, A is only
+     * semi-definite: a pivot that falls to round-off of its diagonal marks a direction A does not see,
+     * and its unknown is set to 0 (a zero row of L⁻¹) instead of dividing by the round-off, which made
+     * the old factor's entries reach 1e150 and the preconditioned residual overflow.
+     */
     private void factorCoarsest() {
         SparseMatrix a = levels.get(levels.size() - 1);
         int n = coarseSize;
@@ -195,9 +201,15 @@ final class AggregationMultigrid {
         for (int i = 0; i < n; i++)
             for (int k = a.rowStart[i]; k < a.rowStart[i + 1]; k++) cholesky[i * n + a.col[k]] = a.val[k];
         for (int j = 0; j < n; j++) {
-            double d = cholesky[j * n + j];
+            double diagonal = cholesky[j * n + j];
+            double d = diagonal;
             for (int k = 0; k < j; k++) d -= cholesky[j * n + k] * cholesky[j * n + k];
-            d = Math.sqrt(Math.max(d, 1e-300));
+            if (!(d > PIVOT_TOLERANCE * Math.abs(diagonal))) {
+                cholesky[j * n + j] = Double.POSITIVE_INFINITY; // x_j = s / ∞ = 0
+                for (int i = j + 1; i < n; i++) cholesky[i * n + j] = 0;
+                continue;
+            }
+            d = Math.sqrt(d);
             cholesky[j * n + j] = d;
             for (int i = j + 1; i < n; i++) {
                 double s = cholesky[i * n + j];

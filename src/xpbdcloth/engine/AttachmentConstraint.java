@@ -50,7 +50,6 @@ public final class AttachmentConstraint extends Constraint {
         final int k = 3 * i;
         double dx = x[k] - tx, dy = x[k + 1] - ty, dz = x[k + 2] - tz;
         double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-        lastC = len;
         if (len < DistanceConstraint.MIN_LENGTH) return;
         double w = p.w[i];
         double s = w * deltaLambda(len, w, ctx) / len;

@@ -72,7 +72,6 @@ public final class BendConstraint extends Constraint {
         double dz = (2 * x[iv + 2] - x[i0 + 2] - x[i1 + 2]) * (1.0 / 3);
         double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
         double C = len - restDistance;
-        lastC = C;
         if (len < DistanceConstraint.MIN_LENGTH) return;
         double w0 = p.w[b0], wv = p.w[v], w1 = p.w[b1];
         double dLambda = deltaLambda(C, (4 * wv + w0 + w1) * (1.0 / 9), ctx);

@@ -25,8 +25,6 @@ public abstract class Constraint {
     private double compliance = 0.0;
     /** XPBD Lagrange multiplier accumulated over the current substep. */
     protected double lambda;
-    /** C at the last projection (before it moved anything). */
-    protected double lastC;
 
     private double stiffnessPerSweep = 1.0;
     private long preparedRevision = -1;
@@ -53,9 +51,6 @@ public abstract class Constraint {
 
     /** The λ accumulated so far in this substep (XPBD; in PBD mode, the sum of the Δλ applied). */
     public final double lambda() { return lambda; }
-
-    /** C as the last projection found it. */
-    public final double lastValue() { return lastC; }
 
     /** The force magnitude this constraint applied over the last substep of length h: |λ| / h² (N). */
     public final double force(double h) { return Math.abs(lambda) / (h * h); }

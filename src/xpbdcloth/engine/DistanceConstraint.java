@@ -68,7 +68,6 @@ public final class DistanceConstraint extends Constraint {
         double dx = x[ia] - x[ib], dy = x[ia + 1] - x[ib + 1], dz = x[ia + 2] - x[ib + 2];
         double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
         double C = len - restLength;
-        lastC = C;
         if (len < MIN_LENGTH) return;
         double dLambda = deltaLambda(C, w0 + w1, ctx);
         double s = dLambda / len; // folds n = d/len into the update

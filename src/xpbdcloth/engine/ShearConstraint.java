@@ -86,13 +86,12 @@ public final class ShearConstraint extends Constraint {
         double e1x = x[i1] - x[io], e1y = x[i1 + 1] - x[io + 1], e1z = x[i1 + 2] - x[io + 2];
         double e2x = x[i2] - x[io], e2y = x[i2 + 1] - x[io + 1], e2z = x[i2 + 2] - x[io + 2];
         double l1 = Math.sqrt(e1x * e1x + e1y * e1y + e1z * e1z), l2 = Math.sqrt(e2x * e2x + e2y * e2y + e2z * e2z);
-        if (l1 < DistanceConstraint.MIN_LENGTH || l2 < DistanceConstraint.MIN_LENGTH) { lastC = 0; return; }
+        if (l1 < DistanceConstraint.MIN_LENGTH || l2 < DistanceConstraint.MIN_LENGTH) return;
         double inv1 = 1 / l1, inv2 = 1 / l2;
         e1x *= inv1; e1y *= inv1; e1z *= inv1;
         e2x *= inv2; e2y *= inv2; e2z *= inv2;
         double c = Math.max(-1, Math.min(1, e1x * e2x + e1y * e2y + e1z * e2z));
         double C = Math.acos(c) - restAngle;
-        lastC = C;
         double sin = Math.sqrt(1 - c * c);
         if (sin < MIN_SIN) return;
         double s1 = -inv1 / sin, s2 = -inv2 / sin;

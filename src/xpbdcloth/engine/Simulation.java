@@ -7,7 +7,8 @@ import java.util.List;
  * A set of particles, their constraints, kinematic spheres and scripts, stepped by a sequential
  * Gauss–Seidel solver.
  *
- * <p>{@code step(dt)} runs, for each of s substeps of h = dt/s (Macklin et al. 2019, "Small Steps"):
+ * <p>{@code step(dt)} gathers external forces once ({@link Stage#FORCES}) and runs, for each of s substeps
+ * of h = dt/s (Macklin et al. 2019, "Small Steps"):
  * <ol>
  *   <li><b>predict</b>: semi-implicit Euler, v += h·(g + w·f), x_prev = x, x += h·v (free particles);</li>
  *   <li><b>kinematics</b>: scripted pins and spheres move to their place at the substep's end;</li>
@@ -17,6 +18,9 @@ import java.util.List;
  * </ol>
  * External forces are gathered once per step and act on all of its substeps. The constraint order is
  * cloth constraints as added, then attachments, then contacts, so hard contacts have the last word.
+ *
+ * <p>Last line of defence: the state is copied before every step (into arrays made once) and checked
+ * after it; a step that leaves a non-finite number is undone and reported, never kept.
  */
 public final class Simulation {
     private final Particles particles;
@@ -28,6 +32,7 @@ public final class Simulation {
     private final List<Kinematics> kinematics = new ArrayList<>();
     private final List<ExternalForce> forces = new ArrayList<>();
     private final SolverContext ctx = new SolverContext();
+    private final StepSnapshot snapshot;
     /** The solve order, rebuilt only when the set of constraints changes. */
     private Constraint[] order = new Constraint[0];
     /** The coloured order, built on first use after a change of the constraint set. */
@@ -45,6 +50,7 @@ public final class Simulation {
         if (settings == null) throw new IllegalArgumentException("settings must not be null, was null");
         this.particles = particles;
         this.settings = settings;
+        this.snapshot = new StepSnapshot(particles.count());
     }
 
     public Particles particles() { return particles; }
@@ -151,44 +157,124 @@ public final class Simulation {
     /** One step of the settings' timestep. */
     public void step() { step(settings.timestep()); }
 
-    /** One step of dt seconds, split into the settings' substeps. */
+    /**
+     * One step of dt seconds, split into the settings' substeps. If it leaves any position or velocity
+     * non-finite, the state from before the step is restored and a {@link SimulationDivergedException}
+     * names the stage and constraint family that produced the first non-finite number.
+     */
     public void step(double dt) {
         Check.positive("dt", dt);
+        snapshot.save(particles, spheres, time, stepCount);
+        run(dt, null);
+        if (!Metrics.allFinite(particles)) throw diverged(dt);
+    }
+
+    /**
+     * The stages of one step (see {@link Stage}). With a probe (only when replaying a step that
+     * diverged) the state is checked after every stage and every projection; without one, the loop
+     * pays one null test per stage.
+     */
+    private void run(double dt, Probe probe) {
         final int substeps = settings.substeps(), iterations = settings.iterations();
         final double h = dt / substeps;
-        for (int f = 0, nf = forces.size(); f < nf; f++) forces.get(f).apply(particles, time);
+        for (int f = 0, nf = forces.size(); f < nf; f++) forces.get(f).apply(particles, time, dt);
+        if (probe != null) probe.check(Stage.FORCES);
         ctx.load(settings, h);
         final boolean coloured = settings.order() == ConstraintOrder.COLOURED;
         final Colouring col = coloured ? colouring() : null;
         final Constraint[] cs = coloured ? col.ordered : order;
-        final ParallelSweeps team = parallelFor(settings.threads());
+        final ParallelSweeps team = probe == null ? parallelFor(settings.threads()) : null;
         for (int s = 0; s < substeps; s++) {
             predict(h);
+            if (probe != null) probe.check(Stage.PREDICT);
             final double t = time + h;
             for (int k = 0, nk = kinematics.size(); k < nk; k++) kinematics.get(k).apply(particles, t);
             for (int k = 0, nk = spheres.size(); k < nk; k++) spheres.get(k).advance(t, h);
+            if (probe != null) probe.check(Stage.KINEMATICS);
             for (Constraint c : cs) c.beginSubstep(ctx);
             if (sweepListener != null) sweepListener.afterSweep(this, s, -1);
             if (settings.solver() != SolverType.GAUSS_SEIDEL) {
                 GlobalSolver g = globalSolver();
                 for (int it = 0; it < iterations; it++) {
                     g.iterate(particles, ctx);
-                    for (Constraint c : afterGlobal) c.project(particles, ctx);
+                    if (probe != null) probe.checkBody(g);
+                    project(afterGlobal, probe);
                     if (sweepListener != null) sweepListener.afterSweep(this, s, it);
                 }
             } else if (team != null && sweepListener == null) {
                 team.sweep(col, particles, ctx, iterations);
             } else {
                 for (int it = 0; it < iterations; it++) {
-                    for (Constraint c : cs) c.project(particles, ctx);
+                    project(cs, probe);
                     if (sweepListener != null) sweepListener.afterSweep(this, s, it);
                 }
             }
             updateVelocities(h);
+            if (probe != null) probe.check(Stage.UPDATE_VELOCITIES);
             time = t;
         }
         java.util.Arrays.fill(particles.force, 0);
         stepCount++;
+    }
+
+    /** One Gauss–Seidel sweep over {@code cs}; with a probe, each projection is checked. */
+    private void project(Constraint[] cs, Probe probe) {
+        if (probe == null) { for (Constraint c : cs) c.project(particles, ctx); return; }
+        for (Constraint c : cs) {
+            c.project(particles, ctx);
+            probe.check(c);
+        }
+    }
+
+    /** Restores the state before the step, replays it with a probe to find the culprit, restores again. */
+    private SimulationDivergedException diverged(double dt) {
+        snapshot.restore(particles, spheres);
+        time = snapshot.time;
+        stepCount = snapshot.stepCount;
+        Probe probe = new Probe();
+        try {
+            run(dt, probe);
+        } catch (Probe.Found found) {
+            // the probe has recorded where
+        }
+        snapshot.restore(particles, spheres);
+        time = snapshot.time;
+        stepCount = snapshot.stepCount;
+        // A step whose replay stays finite cannot happen in a deterministic engine; say "solve" if it does.
+        return new SimulationDivergedException(stepCount + 1, probe.stage == null ? Stage.SOLVE : probe.stage, probe.family);
+    }
+
+    /** Finds the first stage and constraint family of a replayed step that leave a non-finite number. */
+    private final class Probe {
+        final class Found extends RuntimeException {
+            Found() { super(null, null, false, false); }
+        }
+
+        Stage stage;
+        ConstraintFamily family;
+
+        void check(Stage st) {
+            boolean finite = Metrics.allFinite(particles);
+            if (st == Stage.FORCES) for (double f : particles.force) finite &= Double.isFinite(f);
+            if (!finite) found(st, null);
+        }
+
+        void check(Constraint c) {
+            for (int i : c.particles())
+                for (int k = 3 * i; k < 3 * i + 3; k++)
+                    if (!Double.isFinite(particles.x[k])) found(Stage.SOLVE, c.family());
+        }
+
+        /** After a global iteration: the first body constraint on a non-finite particle names the family. */
+        void checkBody(GlobalSolver g) {
+            for (Constraint c : g.constraints()) check(c);
+        }
+
+        private void found(Stage st, ConstraintFamily f) {
+            stage = st;
+            family = f;
+            throw new Found();
+        }
     }
 
     private GlobalSolver globalSolver() {
@@ -206,6 +292,9 @@ public final class Simulation {
 
     /** Conjugate-gradient iterations of the last global iteration (0 with Gauss–Seidel). */
     public int lastPcgIterations() { return global == null ? 0 : global.lastIterations(); }
+
+    /** Global iterations whose step was not taken (see {@link GlobalSolver#iterate}), 0 with Gauss–Seidel. */
+    public int rejectedGlobalSteps() { return global == null ? 0 : global.rejectedSteps(); }
 
     /** Conjugate-gradient iterations since the global solver was built. */
     public int totalPcgIterations() { return global == null ? 0 : global.totalIterations(); }

@@ -7,5 +7,8 @@ public enum SolverType {
     /** Global: linearise all constraints and solve (J W Jᵀ + α̃) Δλ = −C − α̃λ by conjugate gradients, Jacobi-preconditioned. */
     JACOBI_PCG,
     /** The same system, preconditioned by an unsmoothed-aggregation multigrid V-cycle (as MGPBD). */
-    MULTIGRID_PCG
+    MULTIGRID_PCG;
+
+    /** The name users type and read: gauss-seidel, jacobi-pcg, multigrid-pcg. */
+    public String label() { return name().toLowerCase(java.util.Locale.ROOT).replace('_', '-'); }
 }

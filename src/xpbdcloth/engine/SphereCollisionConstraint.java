@@ -53,7 +53,6 @@ public final class SphereCollisionConstraint extends Constraint {
         double dx = x[k] - s.cx, dy = x[k + 1] - s.cy, dz = x[k + 2] - s.cz;
         double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
         double C = len - (s.radius + s.margin);
-        lastC = C;
         double w = p.w[i];
         if (C >= 0 || w == 0) return;
         double nx, ny, nz;

@@ -31,8 +31,6 @@ public final class PresetLoader {
     /** The presets that ship with the project, in the order the sketch offers them. */
     public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain");
 
-    static final int MAX_RESOLUTION = 512;
-
     private static final ObjectMapper JSON = new ObjectMapper()
             .enable(JsonParser.Feature.STRICT_DUPLICATE_DETECTION);
 
@@ -122,22 +120,20 @@ public final class PresetLoader {
 
         Preset.Cloth cloth(Node n) {
             object(n, Set.of("columns", "rows", "width", "height", "plane", "origin", "arealDensity", "totalMass", "pins"));
-            int columns = integer(required(n, "columns"), 1, MAX_RESOLUTION);
-            int rows = integer(required(n, "rows"), 1, MAX_RESOLUTION);
+            int columns = integer(required(n, "columns"), Limits.RESOLUTION);
+            int rows = integer(required(n, "rows"), Limits.RESOLUTION);
             if (columns * rows < 2) throw fail(n.child("rows"), "the cloth needs at least 2 particles, columns*rows was " + columns * rows);
-            double width = number(required(n, "width"), 0, 100);
-            double height = number(required(n, "height"), 0, 100);
-            if (columns > 1 && width == 0) throw fail(n.child("width"), "must be > 0 when columns > 1, was 0");
-            if (rows > 1 && height == 0) throw fail(n.child("height"), "must be > 0 when rows > 1, was 0");
+            double width = size(required(n, "width"), columns > 1);
+            double height = size(required(n, "height"), rows > 1);
             Node pl = optional(n, "plane");
             ClothBuilder.Plane plane = pl == null ? ClothBuilder.Plane.VERTICAL : choice(pl, ClothBuilder.Plane.class);
             Node o = optional(n, "origin");
-            double[] origin = o == null ? new double[3] : vector(o);
+            double[] origin = o == null ? new double[3] : vector(o, Limits.POSITION);
             Node ad = optional(n, "arealDensity"), tm = optional(n, "totalMass");
             if ((ad == null) == (tm == null))
                 throw fail(n.path.isEmpty() ? "cloth" : n.path, "needs exactly one of arealDensity (kg/m²) and totalMass (kg)");
-            double arealDensity = ad == null ? Double.NaN : number(ad, 1e-9, 1e6);
-            double totalMass = tm == null ? Double.NaN : number(tm, 1e-9, 1e6);
+            double arealDensity = ad == null ? Double.NaN : number(ad, Limits.AREAL_DENSITY);
+            double totalMass = tm == null ? Double.NaN : number(tm, Limits.TOTAL_MASS);
             List<int[]> pins = new ArrayList<>();
             Node ps = optional(n, "pins");
             if (ps != null) for (Node p : array(ps)) pins.addAll(pinned(p, columns, rows));
@@ -165,7 +161,7 @@ public final class PresetLoader {
             }
             if (!p.json.isArray() || p.json.size() != 2) throw fail(p.path, "must be [row, col] or a corner or edge name, was " + describe(p.json));
             Node r = new Node(p.json.get(0), p.path + "[0]"), c = new Node(p.json.get(1), p.path + "[1]");
-            int row = integer(r, Integer.MIN_VALUE, Integer.MAX_VALUE), col = integer(c, Integer.MIN_VALUE, Integer.MAX_VALUE);
+            int row = integer(r), col = integer(c);
             if (row < 0 || row >= rows || col < 0 || col >= columns)
                 throw fail(p.path, "pin [" + row + ", " + col + "] is outside the " + rows + "x" + columns + " grid (rows x columns)");
             out.add(new int[] {row, col});
@@ -185,23 +181,24 @@ public final class PresetLoader {
 
         Preset.Material material(Node n) {
             object(n, Set.of("stiffness", "compliance"));
-            return new Preset.Material(number(required(n, "stiffness"), 0, 1), number(required(n, "compliance"), 0, 1e6));
+            return new Preset.Material(number(required(n, "stiffness"), Limits.STIFFNESS), number(required(n, "compliance"), Limits.COMPLIANCE));
         }
 
         Preset.Solver solver(Node n) {
             object(n, Set.of("mode", "iterations", "substeps", "dt", "mullerCorrection", "gravity", "type"));
             ConstraintMode mode = choice(required(n, "mode"), ConstraintMode.class);
-            int iterations = integer(required(n, "iterations"), 1, 1000);
+            int iterations = integer(required(n, "iterations"), Limits.ITERATIONS);
             Node s = optional(n, "substeps");
-            int substeps = s == null ? 1 : integer(s, 1, 100);
-            double dt = number(required(n, "dt"), 0, 1);
-            if (dt == 0) throw fail(n.child("dt"), "must be > 0, was 0");
+            int substeps = s == null ? 1 : integer(s, Limits.SUBSTEPS);
+            double dt = number(required(n, "dt"), Limits.DT);
             Node m = optional(n, "mullerCorrection");
             boolean muller = m == null || bool(m);
             Node g = optional(n, "gravity");
-            double[] gravity = g == null ? new double[] {0, -9.81, 0} : vector(g);
+            double[] gravity = g == null ? new double[] {0, -9.81, 0} : vector(g, Limits.GRAVITY);
             Node t = optional(n, "type");
             xpbdcloth.engine.SolverType type = t == null ? xpbdcloth.engine.SolverType.GAUSS_SEIDEL : solverType(t);
+            if (mode == ConstraintMode.PBD && type != xpbdcloth.engine.SolverType.GAUSS_SEIDEL)
+                throw fail(t.path, "must be gauss-seidel in PBD mode (a global solve needs XPBD's compliance), was \"" + type.label() + "\"");
             return new Preset.Solver(mode, iterations, substeps, dt, muller, gravity, type);
         }
 
@@ -215,31 +212,33 @@ public final class PresetLoader {
 
         Preset.SphereSpec sphere(Node n) {
             object(n, Set.of("radius", "margin", "staticFriction", "kineticFriction", "angularVelocity", "path"));
-            double radius = number(required(n, "radius"), 1e-6, 100);
+            double radius = number(required(n, "radius"), Limits.SPHERE_RADIUS);
             Node m = optional(n, "margin");
-            double margin = m == null ? 0 : number(m, 0, 1);
-            double mus = number(required(n, "staticFriction"), 0, 100);
-            double muk = number(required(n, "kineticFriction"), 0, 100);
+            double margin = m == null ? 0 : number(m, Limits.MARGIN);
+            double mus = number(required(n, "staticFriction"), Limits.FRICTION);
+            double muk = number(required(n, "kineticFriction"), Limits.FRICTION);
             Node w = optional(n, "angularVelocity");
-            double[] omega = w == null ? new double[3] : vector(w);
+            double[] omega = w == null ? new double[3] : vector(w, Limits.ANGULAR_VELOCITY);
             Node p = required(n, "path");
             object(p, Set.of("type", "centre", "start", "velocity", "radius", "angularSpeed", "amplitude", "frequency"));
-            String type = string(required(p, "type"));
+            Node typeNode = p.json.has("type") ? required(p, "type") : null;
+            if (typeNode == null) throw fail(p.child("type"), "is missing; one of fixed, linear, circle, oscillation");
+            String type = string(typeNode);
             switch (type) {
                 case "fixed":
                     only(p, Set.of("type", "centre"));
-                    return new Preset.SphereSpec(radius, margin, mus, muk, omega, type, vector(required(p, "centre")), new double[3], 0, 0);
+                    return new Preset.SphereSpec(radius, margin, mus, muk, omega, type, vector(required(p, "centre"), Limits.POSITION), new double[3], 0, 0);
                 case "linear":
                     only(p, Set.of("type", "start", "velocity"));
-                    return new Preset.SphereSpec(radius, margin, mus, muk, omega, type, vector(required(p, "start")), vector(required(p, "velocity")), 0, 0);
+                    return new Preset.SphereSpec(radius, margin, mus, muk, omega, type, vector(required(p, "start"), Limits.POSITION), vector(required(p, "velocity"), Limits.SPEED), 0, 0);
                 case "circle":
                     only(p, Set.of("type", "centre", "radius", "angularSpeed"));
-                    return new Preset.SphereSpec(radius, margin, mus, muk, omega, type, vector(required(p, "centre")), new double[3],
-                            number(required(p, "radius"), 0, 100), number(required(p, "angularSpeed"), -1e3, 1e3));
+                    return new Preset.SphereSpec(radius, margin, mus, muk, omega, type, vector(required(p, "centre"), Limits.POSITION), new double[3],
+                            number(required(p, "radius"), Limits.PATH_RADIUS), number(required(p, "angularSpeed"), Limits.ANGULAR_SPEED));
                 case "oscillation":
                     only(p, Set.of("type", "centre", "amplitude", "frequency"));
-                    return new Preset.SphereSpec(radius, margin, mus, muk, omega, type, vector(required(p, "centre")), vector(required(p, "amplitude")),
-                            0, number(required(p, "frequency"), 0, 1e3));
+                    return new Preset.SphereSpec(radius, margin, mus, muk, omega, type, vector(required(p, "centre"), Limits.POSITION), vector(required(p, "amplitude"), Limits.DISPLACEMENT),
+                            0, number(required(p, "frequency"), Limits.FREQUENCY));
                 default:
                     throw fail(p.child("type"), "must be one of fixed, linear, circle, oscillation, was \"" + type + "\"");
             }
@@ -255,14 +254,14 @@ public final class PresetLoader {
             for (int[] p : cloth.pins) pinned |= p[0] == pin[0] && p[1] == pin[1];
             if (!pinned) throw fail(n.child("pin"), "particle [" + pin[0] + ", " + pin[1] + "] must also be listed in cloth.pins");
             Node s = optional(n, "start");
-            return new Preset.PinMotion(pin[0], pin[1], vector(required(n, "displacement")), s == null ? 0 : number(s, 0, 1e6),
-                    number(required(n, "duration"), 1e-6, 1e6));
+            return new Preset.PinMotion(pin[0], pin[1], vector(required(n, "displacement"), Limits.DISPLACEMENT), s == null ? 0 : number(s, Limits.START_TIME),
+                    number(required(n, "duration"), Limits.DURATION));
         }
 
         Preset.WindSpec wind(Node n) {
             object(n, Set.of("velocity", "drag", "gust"));
             Node g = optional(n, "gust");
-            return new Preset.WindSpec(vector(required(n, "velocity")), number(required(n, "drag"), 0, 1e3), g == null ? 0 : number(g, 0, 1));
+            return new Preset.WindSpec(vector(required(n, "velocity"), Limits.WIND_SPEED), number(required(n, "drag"), Limits.DRAG), g == null ? 0 : number(g, Limits.GUST));
         }
 
         // ---- typed access with messages ----
@@ -308,24 +307,36 @@ public final class PresetLoader {
             return n.json.asBoolean();
         }
 
-        double number(Node n, double lo, double hi) {
+        double number(Node n, Limits.Range range) {
             if (!n.json.isNumber()) throw fail(n.path, "must be a number, was " + describe(n.json));
             double v = n.json.asDouble();
-            if (!Double.isFinite(v) || v < lo || v > hi) throw fail(n.path, "must be in [" + fmt(lo) + ", " + fmt(hi) + "], was " + n.json.asText());
+            if (!Double.isFinite(v) || !range.contains(v)) throw fail(n.path, "must be in " + range.text() + (range.unit.isEmpty() ? "" : " " + range.unit) + ", was " + n.json.asText());
             return v;
         }
 
-        int integer(Node n, int lo, int hi) {
+        /** Width or height: 0 along a single particle, else in {@link Limits#SIZE}. */
+        double size(Node n, boolean spans) {
+            if (spans) return number(n, Limits.SIZE);
+            if (!n.json.isNumber() || n.json.asDouble() != 0 && !Limits.SIZE.contains(n.json.asDouble()))
+                throw fail(n.path, "must be 0 or in " + Limits.SIZE.text() + " m, was " + n.json.asText());
+            return n.json.asDouble();
+        }
+
+        int integer(Node n, Limits.Range range) {
+            int v = integer(n);
+            if (!range.contains(v)) throw fail(n.path, "must be in " + range.text() + ", was " + v);
+            return v;
+        }
+
+        int integer(Node n) {
             if (!n.json.isIntegralNumber() || !n.json.canConvertToInt()) throw fail(n.path, "must be a whole number, was " + describe(n.json));
-            int v = n.json.asInt();
-            if (v < lo || v > hi) throw fail(n.path, "must be in [" + lo + ", " + hi + "], was " + v);
-            return v;
+            return n.json.asInt();
         }
 
-        double[] vector(Node n) {
+        double[] vector(Node n, Limits.Range range) {
             if (!n.json.isArray() || n.json.size() != 3) throw fail(n.path, "must be [x, y, z], was " + describe(n.json));
             double[] v = new double[3];
-            for (int i = 0; i < 3; i++) v[i] = number(new Node(n.json.get(i), n.path + "[" + i + "]"), -1e6, 1e6);
+            for (int i = 0; i < 3; i++) v[i] = number(new Node(n.json.get(i), n.path + "[" + i + "]"), range);
             return v;
         }
 
@@ -334,10 +345,6 @@ public final class PresetLoader {
             for (E e : type.getEnumConstants()) if (e.name().equalsIgnoreCase(s)) return e;
             String[] names = Arrays.stream(type.getEnumConstants()).map(e -> e.name().toLowerCase(Locale.ROOT)).toArray(String[]::new);
             throw fail(n.path, "must be one of " + String.join(", ", names) + ", was \"" + s + "\"");
-        }
-
-        static String fmt(double v) {
-            return v == Math.rint(v) && Math.abs(v) < 1e15 ? String.valueOf((long) v) : String.valueOf(v);
         }
 
         static String describe(JsonNode j) {

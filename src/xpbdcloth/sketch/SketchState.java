@@ -8,6 +8,9 @@ import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.ConstraintMode;
 import xpbdcloth.engine.Simulation;
 import xpbdcloth.engine.SolverSettings;
+import xpbdcloth.engine.SimulationDivergedException;
+import xpbdcloth.engine.SolverType;
+import xpbdcloth.scene.Limits;
 import xpbdcloth.scene.Preset;
 import xpbdcloth.scene.PresetException;
 import xpbdcloth.scene.PresetLoader;
@@ -35,7 +38,7 @@ public final class SketchState {
         if (n < 1 || n > 64) throw new IllegalArgumentException("threads must be in [1, 64], was " + n);
         threads = n;
     }
-    static final double MIN_COMPLIANCE = 1e-10, MAX_COMPLIANCE = 1e3;
+    static final double MIN_COMPLIANCE = Limits.SMALLEST_NONZERO_COMPLIANCE, MAX_COMPLIANCE = Limits.COMPLIANCE.hi;
     /** The families a material key acts on: null means all three. */
     static final ConstraintFamily[] FAMILY_CHOICES = {null, ConstraintFamily.STRUCTURAL, ConstraintFamily.SHEAR, ConstraintFamily.BEND};
 
@@ -48,7 +51,7 @@ public final class SketchState {
     private int iterations, substeps;
     private double dt;
     private boolean muller;
-    private xpbdcloth.engine.SolverType solverType;
+    private SolverType solverType;
     private final Map<ConstraintFamily, double[]> materials = new EnumMap<>(ConstraintFamily.class);
     private int familyChoice;
 
@@ -99,9 +102,10 @@ public final class SketchState {
     private void applyAll() {
         for (Scene s : running()) {
             SolverSettings st = s.simulation().settings();
-            st.iterations(iterations).substeps(substeps).timestep(dt).mullerCorrection(muller).solver(solverType)
-                    .threads(threads);
-            st.mode(s == left ? ConstraintMode.PBD : s == right ? ConstraintMode.XPBD : mode);
+            ConstraintMode m = s == left ? ConstraintMode.PBD : s == right ? ConstraintMode.XPBD : mode;
+            // Gauss–Seidel first, so that no intermediate state pairs PBD with a global solver.
+            st.iterations(iterations).substeps(substeps).timestep(dt).mullerCorrection(muller).threads(threads)
+                    .solver(SolverType.GAUSS_SEIDEL).mode(m).solver(m == ConstraintMode.PBD ? SolverType.GAUSS_SEIDEL : solverType);
             materials.forEach((f, km) -> {
                 s.simulation().setStiffness(f, km[0]);
                 s.simulation().setCompliance(f, km[1]);
@@ -126,7 +130,7 @@ public final class SketchState {
     public int substeps() { return substeps; }
     public double dt() { return dt; }
     public boolean mullerCorrection() { return muller; }
-    public xpbdcloth.engine.SolverType solverType() { return solverType; }
+    public SolverType solverType() { return solverType; }
     public boolean windOn() { return windOn; }
     public double windSpeed() { return windSpeed; }
     public double windAngle() { return windAngle; }
@@ -152,6 +156,10 @@ public final class SketchState {
 
     public void toggleMode() {
         if (sideBySide) { say("side by side shows both: PBD left, XPBD right"); return; }
+        if (mode == ConstraintMode.XPBD && solverType != SolverType.GAUSS_SEIDEL) {
+            error("PBD runs on Gauss-Seidel only (its k is defined per projection): press v for gauss-seidel first");
+            return;
+        }
         mode = mode == ConstraintMode.PBD ? ConstraintMode.XPBD : ConstraintMode.PBD;
         applyAll();
         say("mode " + mode);
@@ -165,19 +173,23 @@ public final class SketchState {
 
     /** Gauss–Seidel → Jacobi-PCG → multigrid-PCG → Gauss–Seidel, for the running scenes. */
     public void cycleSolver() {
-        xpbdcloth.engine.SolverType[] all = xpbdcloth.engine.SolverType.values();
+        if (sideBySide || mode == ConstraintMode.PBD) {
+            error((sideBySide ? "side by side runs PBD on the left" : "PBD mode") + ", which needs Gauss-Seidel: the solver stays gauss-seidel (press m for XPBD)");
+            return;
+        }
+        SolverType[] all = SolverType.values();
         solverType = all[(solverType.ordinal() + 1) % all.length];
         applyAll();
-        say("solver " + solverType.name().toLowerCase().replace('_', '-') + (solverType == xpbdcloth.engine.SolverType.GAUSS_SEIDEL ? "" : ": each iteration is one global Newton step; contacts stay Gauss-Seidel"));
+        say("solver " + solverType.label() + (solverType == SolverType.GAUSS_SEIDEL ? "" : ": each iteration is one global Newton step; contacts stay Gauss-Seidel"));
     }
 
     public void changeIterations(int delta) {
-        iterations = Math.max(1, Math.min(1000, iterations + delta));
+        iterations = (int) Limits.ITERATIONS.clamp(iterations + delta);
         applyAll();
     }
 
     public void changeSubsteps(int delta) {
-        substeps = Math.max(1, Math.min(100, substeps + delta));
+        substeps = (int) Limits.SUBSTEPS.clamp(substeps + delta);
         applyAll();
     }
 
@@ -278,7 +290,15 @@ public final class SketchState {
     public boolean advance() {
         if (paused && pendingSteps == 0) return false;
         if (pendingSteps > 0) pendingSteps--;
-        for (Scene s : running()) s.simulation().step();
+        try {
+            for (Scene s : running()) s.simulation().step();
+        } catch (SimulationDivergedException e) {
+            // The engine has already put the scene back as it was before the step; stop there and say why.
+            paused = true;
+            pendingSteps = 0;
+            error("paused: " + e.getMessage());
+            return false;
+        }
         return true;
     }
 

@@ -1,5 +1,7 @@
 package xpbdcloth.tools;
 
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
 import java.util.Random;
 import java.util.concurrent.Callable;
@@ -14,7 +16,9 @@ import xpbdcloth.engine.ConstraintMode;
 import xpbdcloth.engine.Metrics;
 import xpbdcloth.engine.Particles;
 import xpbdcloth.engine.Simulation;
+import xpbdcloth.engine.SimulationDivergedException;
 import xpbdcloth.engine.SolverSettings;
+import xpbdcloth.engine.SolverType;
 import xpbdcloth.engine.Sphere;
 import xpbdcloth.engine.SpherePath;
 
@@ -27,24 +31,43 @@ import xpbdcloth.engine.SpherePath;
 @Command(name = "fuzz", mixinStandardHelpOptions = true, description = "Random simulations that must stay finite.")
 public final class Fuzz implements Callable<Integer> {
 
-    /** One case's outcome: null if it passed, else why it failed. */
-    public static String runCase(long seed) {
+    /** One case's outcome with the solver drawn from its seed: null if it passed, else why it failed. */
+    public static String runCase(long seed) { return runCase(seed, null); }
+
+    /**
+     * One case's outcome: null if it passed, else why it failed. {@code solver} forces the solver the
+     * case starts with (null: drawn from the seed like everything else). Mid-run the case may switch
+     * mode and solver; a switch the settings must refuse (PBD with a global solver) is tried too, and
+     * must be refused with a message naming the parameter while changing nothing.
+     */
+    public static String runCase(long seed, SolverType solver) {
         Random r = new Random(seed);
         String[] illegal = r.nextInt(10) == 0 ? pickIllegal(r) : null;
         try {
-            Simulation sim = build(r, illegal);
+            Simulation sim = build(r, illegal, solver);
+            SolverSettings s = sim.settings();
             AttachmentConstraint grab = null;
             int steps = 10 + r.nextInt(40);
-            for (int s = 0; s < steps; s++) {
+            for (int k = 0; k < steps; k++) {
                 if (grab == null && r.nextInt(8) == 0) {
                     int i = r.nextInt(sim.particles().count());
                     grab = sim.attach(i, sim.particles().x(i), sim.particles().y(i), sim.particles().z(i));
                 }
                 if (grab != null) grab.moveTarget(grab.targetX() + r.nextGaussian() * 0.05, grab.targetY() + r.nextGaussian() * 0.05, grab.targetZ());
                 if (grab != null && r.nextInt(10) == 0) { sim.release(grab); grab = null; }
-                if (r.nextInt(20) == 0) sim.settings().mode(sim.settings().mode() == ConstraintMode.PBD ? ConstraintMode.XPBD : ConstraintMode.PBD);
+                if (r.nextInt(20) == 0) {
+                    String refused = switchMode(s);
+                    if (refused != null) return "seed " + seed + ": " + refused;
+                }
+                if (r.nextInt(20) == 0) {
+                    SolverType to = SolverType.values()[r.nextInt(3)];
+                    if (to != SolverType.GAUSS_SEIDEL) capForGlobal(s);
+                    String refused = switchSolver(s, to);
+                    if (refused != null) return "seed " + seed + ": " + refused;
+                }
                 sim.step();
             }
+            sim.close();
             if (illegal != null) return "seed " + seed + ": illegal " + illegal[0] + " = " + illegal[1] + " was accepted";
             if (!Metrics.allFinite(sim.particles())) return "seed " + seed + ": non-finite position or velocity";
             return null;
@@ -54,7 +77,45 @@ public final class Fuzz implements Callable<Integer> {
             if (!m.startsWith(illegal[0]) || !m.endsWith(illegal[1]))
                 return "seed " + seed + ": message does not name " + illegal[0] + " and " + illegal[1] + ": " + m;
             return null;
+        } catch (SimulationDivergedException e) {
+            return "seed " + seed + ": diverged: " + e.getMessage();
+        } catch (RuntimeException | Error e) {
+            return "seed " + seed + ": " + e;
         }
+    }
+
+    /** A global iteration is a whole linear solve: at most 10 × 10 of them per step, so a case costs < 1 s. */
+    static void capForGlobal(SolverSettings s) {
+        s.iterations(Math.min(s.iterations(), 10)).substeps(Math.min(s.substeps(), 10));
+    }
+
+    /** PBD ⇄ XPBD; to PBD under a global solver must be refused. Returns why the refusal was wrong, or null. */
+    static String switchMode(SolverSettings s) {
+        ConstraintMode to = s.mode() == ConstraintMode.PBD ? ConstraintMode.XPBD : ConstraintMode.PBD;
+        if (to == ConstraintMode.PBD && s.solver() != SolverType.GAUSS_SEIDEL) {
+            try {
+                s.mode(to);
+                return "PBD under " + s.solver().label() + " was accepted";
+            } catch (IllegalArgumentException e) {
+                return e.getMessage().startsWith("mode") && s.mode() == ConstraintMode.XPBD ? null : "refusal of PBD: " + e.getMessage();
+            }
+        }
+        s.mode(to);
+        return null;
+    }
+
+    /** Switches the solver; a global solver in PBD mode must be refused. Returns why the refusal was wrong, or null. */
+    static String switchSolver(SolverSettings s, SolverType to) {
+        if (to != SolverType.GAUSS_SEIDEL && s.mode() == ConstraintMode.PBD) {
+            try {
+                s.solver(to);
+                return to.label() + " in PBD mode was accepted";
+            } catch (IllegalArgumentException e) {
+                return e.getMessage().startsWith("solver") && s.solver() == SolverType.GAUSS_SEIDEL ? null : "refusal of " + to.label() + ": " + e.getMessage();
+            }
+        }
+        s.solver(to);
+        return null;
     }
 
     /** {parameter name as the message gives it, value as the message prints it}. */
@@ -74,7 +135,7 @@ public final class Fuzz implements Callable<Integer> {
         return illegal != null && illegal[0].equals(name) ? Double.parseDouble(illegal[1]) : good;
     }
 
-    static Simulation build(Random r, String[] illegal) {
+    static Simulation build(Random r, String[] illegal, SolverType forced) {
         int columns = 1 + r.nextInt(12), rows = 2 + r.nextInt(11);
         double width = r.nextInt(10) == 0 ? 0 : 2 * r.nextDouble(), height = r.nextInt(10) == 0 ? 0 : 2 * r.nextDouble();
         ClothBuilder b = new ClothBuilder().resolution(columns, rows).size(width, height)
@@ -95,8 +156,13 @@ public final class Fuzz implements Callable<Integer> {
         Particles p = cloth.particles();
         if (r.nextInt(4) == 0) for (int i = 0; i < p.count(); i++) p.setMass(i, logUniform(r, 1e-6, 1e3));
         if (illegal != null && illegal[0].equals("mass")) p.setMass(0, -1);
+        SolverType solver = SolverType.values()[r.nextInt(3)];
+        if (forced != null) solver = forced;
+        ConstraintMode mode = r.nextBoolean() ? ConstraintMode.PBD : ConstraintMode.XPBD;
+        if (solver != SolverType.GAUSS_SEIDEL) mode = ConstraintMode.XPBD;
         SolverSettings s = new SolverSettings()
-                .mode(r.nextBoolean() ? ConstraintMode.PBD : ConstraintMode.XPBD)
+                .mode(mode)
+                .solver(solver)
                 // Up to 1000 sweeps or up to 100 substeps, not both, so a case costs milliseconds.
                 .iterations(illegal != null && illegal[0].equals("iterations") ? 0 : r.nextInt(20) == 0 ? 200 + r.nextInt(800) : 1 + r.nextInt(30))
                 .substeps(illegal != null && illegal[0].equals("substeps") ? -3 : 1 + r.nextInt(r.nextInt(10) == 0 ? 100 : 10))
@@ -105,6 +171,7 @@ public final class Fuzz implements Callable<Integer> {
                 .gravity(0, bad(illegal, "gravity.y", -9.81), 0);
         if (s.iterations() > 30) s.substeps(1);
         else if (s.substeps() > 10) s.iterations(Math.min(s.iterations(), 3));
+        if (solver != SolverType.GAUSS_SEIDEL) capForGlobal(s);
         Simulation sim = cloth.simulation(s);
         int spheres = r.nextInt(3);
         for (int k = 0; k < spheres; k++) {
@@ -126,24 +193,58 @@ public final class Fuzz implements Callable<Integer> {
         return sim;
     }
 
-    @Option(names = "--cases", description = "number of cases", defaultValue = "1000")
+    @Option(names = "--cases", description = "number of cases per solver (1 to 10 000 000)", defaultValue = "1000")
     int cases;
 
     @Option(names = "--seed", description = "first seed (replay a failing case with --seed S --cases 1)", defaultValue = "1")
     long seed;
 
+    @Option(names = "--solver", description = "all (every case once per solver) or one of gauss-seidel, jacobi-pcg, multigrid-pcg", defaultValue = "all")
+    String solver;
+
+    @Option(names = "--presets", description = "random preset files to load and step (0 to 10 000 000)", defaultValue = "300")
+    int presets;
+
     public static void main(String[] args) {
         System.exit(new CommandLine(new Fuzz()).execute(args));
     }
 
+    /** One preset case (see {@link PresetFuzz}): null if it passed, else why not. */
+    public static String runPresetCase(long seed) { return PresetFuzz.runCase(seed); }
+
     @Override public Integer call() {
-        long t0 = System.nanoTime();
+        if (cases < 1 || cases > 10_000_000) throw new IllegalArgumentException("cases must be in [1, 10000000], was " + cases);
+        if (seed > Long.MAX_VALUE - cases) throw new IllegalArgumentException("seed must be <= " + (Long.MAX_VALUE - cases) + " so that seed + cases does not overflow, was " + seed);
+        List<SolverType> solvers = new ArrayList<>();
+        for (SolverType t : SolverType.values()) if (solver.equals("all") || solver.equals(t.label())) solvers.add(t);
+        if (solvers.isEmpty()) throw new IllegalArgumentException("solver must be all, gauss-seidel, jacobi-pcg or multigrid-pcg, was " + solver);
         int failed = 0;
-        for (long s = seed; s < seed + cases; s++) {
-            String why = runCase(s);
-            if (why != null) { System.out.println(why); failed++; }
+        long ran = 0;
+        for (SolverType t : solvers) {
+            long t0 = System.nanoTime();
+            int failedHere = 0;
+            for (long k = 0; k < cases; k++) {
+                String why = runCase(seed + k, t);
+                ran++;
+                if (why != null) { System.out.println(t.label() + ": " + why); failedHere++; }
+            }
+            System.out.printf(Locale.ROOT, "fuzz %s: %d cases from seed %d, %d failed, %.1f s%n", t.label(), cases, seed, failedHere, (System.nanoTime() - t0) / 1e9);
+            failed += failedHere;
         }
-        System.out.printf(Locale.ROOT, "fuzz: %d cases from seed %d, %d failed, %.1f s%n", cases, seed, failed, (System.nanoTime() - t0) / 1e9);
+        if (presets < 0 || presets > 10_000_000) throw new IllegalArgumentException("presets must be in [0, 10000000], was " + presets);
+        long t0 = System.nanoTime();
+        int failedPresets = 0;
+        for (long k = 0; k < presets; k++) {
+            String why = PresetFuzz.runCase(seed + k);
+            ran++;
+            if (why != null) { System.out.println(why); failedPresets++; }
+        }
+        System.out.println(PresetFuzz.summary(presets, seed, failedPresets, (System.nanoTime() - t0) / 1e9));
+        failed += failedPresets;
+        if (ran != (long) cases * solvers.size() + presets) {
+            System.out.println("fuzz: ran " + ran + " cases, asked for " + ((long) cases * solvers.size() + presets));
+            return 1;
+        }
         return failed == 0 ? 0 : 1;
     }
 }

@@ -8,6 +8,7 @@ import picocli.CommandLine.Option;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.Metrics;
 import xpbdcloth.engine.Simulation;
+import xpbdcloth.engine.SimulationDivergedException;
 import xpbdcloth.scene.Scene;
 
 /**
@@ -27,18 +28,20 @@ public final class Soak implements Callable<Integer> {
         public final String scene;
         public final long steps;
         public final boolean finite;
+        /** Steps the engine undid because they went non-finite (each one a failure). */
+        public final int divergences;
         public final double maxStrain, energyStart, energyMin, energyMax;
 
-        Result(String scene, long steps, boolean finite, double maxStrain, double energyStart, double energyMin, double energyMax) {
-            this.scene = scene; this.steps = steps; this.finite = finite; this.maxStrain = maxStrain;
+        Result(String scene, long steps, boolean finite, int divergences, double maxStrain, double energyStart, double energyMin, double energyMax) {
+            this.scene = scene; this.steps = steps; this.finite = finite; this.divergences = divergences; this.maxStrain = maxStrain;
             this.energyStart = energyStart; this.energyMin = energyMin; this.energyMax = energyMax;
         }
 
-        public boolean ok() { return finite && maxStrain < MAX_STRAIN && energyMax - energyStart < MAX_ENERGY_RISE; }
+        public boolean ok() { return finite && divergences == 0 && maxStrain < MAX_STRAIN && energyMax - energyStart < MAX_ENERGY_RISE; }
 
         @Override public String toString() {
-            return String.format(Locale.ROOT, "soak %s: %d steps, finite %b, max strain %.4f (bound %.2f), energy start %.4f J, min %.4f J, max %.4f J (rise %.4f, bound %.1f J): %s",
-                    scene, steps, finite, maxStrain, MAX_STRAIN, energyStart, energyMin, energyMax, energyMax - energyStart, MAX_ENERGY_RISE, ok() ? "OK" : "FAILED");
+            return String.format(Locale.ROOT, "soak %s: %d steps, finite %b, divergences %d, max strain %.4f (bound %.2f), energy start %.4f J, min %.4f J, max %.4f J (rise %.4f, bound %.1f J): %s",
+                    scene, steps, finite, divergences, maxStrain, MAX_STRAIN, energyStart, energyMin, energyMax, energyMax - energyStart, MAX_ENERGY_RISE, ok() ? "OK" : "FAILED");
         }
     }
 
@@ -51,15 +54,22 @@ public final class Soak implements Callable<Integer> {
         Simulation sim = Scene.builtIn(scene).simulation();
         double e0 = energy(sim), eMin = e0, eMax = e0, maxStrain = 0;
         boolean finite = true;
+        int divergences = 0;
         for (long s = 0; s < steps && finite; s++) {
-            sim.step();
+            try {
+                sim.step();
+            } catch (SimulationDivergedException e) {
+                System.out.println("soak " + scene + ": " + e.getMessage());
+                divergences++;
+                break; // the state is restored, so stepping on would only repeat the same step
+            }
             finite = Metrics.allFinite(sim.particles());
             maxStrain = Math.max(maxStrain, Metrics.maxStrain(sim, ConstraintFamily.STRUCTURAL));
             double e = energy(sim);
             eMin = Math.min(eMin, e);
             eMax = Math.max(eMax, e);
         }
-        return new Result(scene, steps, finite, maxStrain, e0, eMin, eMax);
+        return new Result(scene, steps, finite, divergences, maxStrain, e0, eMin, eMax);
     }
 
     @Option(names = "--steps", description = "steps per scene", defaultValue = "100000")

@@ -1,0 +1,76 @@
+package xpbdcloth.scene;
+
+import java.util.Locale;
+
+/**
+ * The ranges a preset's numbers must lie in, one table for the loader, the sketch's keys and the preset
+ * fuzzer ({@code gradle fuzz -Ppresets}), which draws every field across its range, edges included,
+ * and requires the scene to stay finite. Units are SI. A range is as wide as the engine is tested to
+ * hold, not as wide as a double: the old loader took dt = 1e-300 (α/h² overflows) and a 1e6 m/s wind,
+ * and both went NaN within 20 steps.
+ */
+public final class Limits {
+    private Limits() {}
+
+    /** A closed interval [lo, hi] with its unit, for messages and the README. */
+    public static final class Range {
+        public final double lo, hi;
+        public final String unit;
+
+        public Range(double lo, double hi, String unit) {
+            this.lo = lo;
+            this.hi = hi;
+            this.unit = unit;
+        }
+
+        public boolean contains(double v) { return v >= lo && v <= hi; }
+
+        public double clamp(double v) { return Math.max(lo, Math.min(hi, v)); }
+
+        /** "[1e-4, 0.1]" */
+        public String text() { return "[" + format(lo) + ", " + format(hi) + "]"; }
+
+        static String format(double v) {
+            return v == Math.rint(v) && Math.abs(v) < 1e7 ? String.valueOf((long) v) : String.valueOf(v).replace('E', 'e');
+        }
+    }
+
+    /** Particles along each side of the grid. */
+    public static final Range RESOLUTION = new Range(1, 512, "particles");
+    /** Width or height of a cloth with more than one particle along it, m. */
+    public static final Range SIZE = new Range(1e-3, 100, "m");
+    /** Any position a preset gives (origin, sphere centres), m. */
+    public static final Range POSITION = new Range(-1000, 1000, "m");
+    public static final Range AREAL_DENSITY = new Range(1e-3, 100, "kg/m²");
+    public static final Range TOTAL_MASS = new Range(1e-6, 1e4, "kg");
+    /** PBD's k. */
+    public static final Range STIFFNESS = new Range(0, 1, "");
+    /** XPBD's α; the sketch's key steps it by √10 between 1e-10 and this maximum (below 1e-10 it is 0). */
+    public static final Range COMPLIANCE = new Range(0, 1e3, "m/N");
+    public static final double SMALLEST_NONZERO_COMPLIANCE = 1e-10;
+    public static final Range ITERATIONS = new Range(1, 1000, "");
+    public static final Range SUBSTEPS = new Range(1, 100, "");
+    /** The step, s: 10 kHz to 10 Hz. */
+    public static final Range DT = new Range(1e-4, 0.1, "s");
+    /** Each component of gravity, m/s² (about ±10 g). */
+    public static final Range GRAVITY = new Range(-100, 100, "m/s²");
+    public static final Range SPHERE_RADIUS = new Range(1e-3, 100, "m");
+    public static final Range MARGIN = new Range(0, 1, "m");
+    /** μₛ and μₖ. */
+    public static final Range FRICTION = new Range(0, 10, "");
+    /** Each component of a sphere's spin, rad/s. */
+    public static final Range ANGULAR_VELOCITY = new Range(-100, 100, "rad/s");
+    /** Each component of a linear path's velocity, m/s. */
+    public static final Range SPEED = new Range(-100, 100, "m/s");
+    public static final Range PATH_RADIUS = new Range(0, 100, "m");
+    public static final Range ANGULAR_SPEED = new Range(-100, 100, "rad/s");
+    /** Each component of an oscillation's amplitude or a pin motion's displacement, m. */
+    public static final Range DISPLACEMENT = new Range(-100, 100, "m");
+    public static final Range FREQUENCY = new Range(0, 100, "Hz");
+    public static final Range START_TIME = new Range(0, 1e6, "s");
+    public static final Range DURATION = new Range(1e-2, 1e6, "s");
+    /** Each component of the wind, m/s (a hurricane is 33 m/s and up). */
+    public static final Range WIND_SPEED = new Range(-100, 100, "m/s");
+    public static final Range DRAG = new Range(0, 10, "kg/(m²·s)");
+    public static final Range GUST = new Range(0, 1, "");
+}

@@ -1,0 +1,53 @@
+package xpbdcloth.sketch;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+import org.junit.jupiter.api.Test;
+import xpbdcloth.engine.ConstraintMode;
+import xpbdcloth.engine.Kinematics;
+import xpbdcloth.engine.Metrics;
+import xpbdcloth.engine.SolverType;
+import xpbdcloth.scene.PresetLoader;
+
+/** The sketch says no where the engine does, and a step that diverges pauses the scene instead of losing it. */
+class SketchRefusalsTest {
+
+    @Test
+    void vInPbdModeSaysSoAndKeepsGaussSeidel() {
+        SketchState s = new SketchState(PresetLoader.builtIn("hanging"));
+        s.toggleMode();
+        assertEquals(ConstraintMode.PBD, s.mode());
+        s.cycleSolver();
+        assertEquals(SolverType.GAUSS_SEIDEL, s.solverType());
+        assertEquals(SolverType.GAUSS_SEIDEL, s.first().settings().solver());
+        assertTrue(s.messageIsError());
+        assertTrue(s.message().contains("needs Gauss-Seidel"), s.message());
+    }
+
+    @Test
+    void mUnderAGlobalSolverSaysSoAndKeepsXpbd() {
+        SketchState s = new SketchState(PresetLoader.builtIn("hanging"));
+        s.cycleSolver();
+        assertEquals(SolverType.JACOBI_PCG, s.solverType());
+        s.toggleMode();
+        assertEquals(ConstraintMode.XPBD, s.mode());
+        assertEquals(ConstraintMode.XPBD, s.first().settings().mode());
+        assertTrue(s.messageIsError());
+        assertTrue(s.message().startsWith("PBD runs on Gauss-Seidel only"), s.message());
+    }
+
+    @Test
+    void aDivergedStepPausesTheSceneWithARedNotice() {
+        SketchState s = new SketchState(PresetLoader.builtIn("hanging"));
+        for (int k = 0; k < 3; k++) assertTrue(s.advance());
+        double before = s.time();
+        Kinematics broken = (p, t) -> p.moveKinematic(0, Double.NaN, 0, 0);
+        s.first().add(broken);
+        assertFalse(s.advance(), "the step did not happen");
+        assertTrue(s.paused);
+        assertTrue(s.messageIsError());
+        assertTrue(s.message().contains("stage 'kinematics'"), s.message());
+        assertEquals(before, s.time(), 0.0, "the clock is where it was");
+        assertTrue(Metrics.allFinite(s.first().particles()), "the scene is kept, finite");
+    }
+}
