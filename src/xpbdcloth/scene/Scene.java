@@ -86,7 +86,8 @@ public final class Scene {
             case "linear": return SpherePath.linear(c[0], c[1], c[2], v[0], v[1], v[2]);
             case "circle": return SpherePath.circle(c[0], c[1], c[2], s.pathRadius, s.rate);
             case "oscillation": return SpherePath.oscillation(c[0], c[1], c[2], v[0], v[1], v[2], s.rate);
-            default: return SpherePath.fixed(c[0], c[1], c[2]);
+            case "fixed": return SpherePath.fixed(c[0], c[1], c[2]);
+            default: throw new IllegalArgumentException("path.type must be fixed, linear, circle or oscillation, was " + s.path);
         }
     }
 

@@ -5,14 +5,13 @@ import static org.junit.jupiter.api.Assertions.*;
 import java.util.HashSet;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
-import xpbdcloth.scene.Scene;
 
 /** The coloured order and its parallel solve. */
 class ColouredOrderTest {
 
     @Test
     void noTwoConstraintsOfAColourShareAParticle() {
-        Simulation sim = Scene.builtIn("sphere-pass").simulation();
+        Simulation sim = Rigs.clothWithSphere(false);
         Colouring c = Colouring.of(sim.constraints(), sim.particles().count());
         assertEquals(sim.constraints().length, c.ordered.length);
         for (int k = 0; k < c.colours(); k++) {
@@ -20,7 +19,7 @@ class ColouredOrderTest {
             for (int i = c.start[k]; i < c.start[k + 1]; i++)
                 for (int p : c.ordered[i].particles()) assertTrue(seen.add(p), "colour " + k + " shares particle " + p);
         }
-        System.out.printf("sphere-pass: %d constraints in %d colours%n", c.ordered.length, c.colours());
+        System.out.printf("32x32 cloth and a sphere: %d constraints in %d colours%n", c.ordered.length, c.colours());
     }
 
     /** Within a colour nothing interacts, so 2 and 3 threads give the very bits of 1 thread. */
@@ -28,7 +27,7 @@ class ColouredOrderTest {
     void parallelIsBitwiseTheColouredSequentialSolve() {
         double[][] out = new double[3][];
         for (int t = 1; t <= 3; t++) {
-            Simulation sim = Scene.builtIn("spinning-sphere").simulation();
+            Simulation sim = Rigs.clothWithSphere(true);
             sim.settings().order(ConstraintOrder.COLOURED).threads(t);
             for (int s = 0; s < 200; s++) sim.step();
             sim.close();

@@ -37,6 +37,21 @@ final class Rigs {
         return sim;
     }
 
+    /**
+     * A 32 × 32 cloth with all three families and one sphere, like the shipped scenes: hanging from its
+     * top corners with a sphere passing through it, or lying flat and dropped on a sphere spinning about y.
+     */
+    static Simulation clothWithSphere(boolean spinning) {
+        ClothBuilder b = new ClothBuilder().resolution(32, 32).arealDensity(0.2)
+                .family(ConstraintFamily.STRUCTURAL, 1.0, 1e-6).family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2);
+        if (spinning) b.size(1.2, 1.2).plane(ClothBuilder.Plane.HORIZONTAL).origin(0, 1.4, 0);
+        else b.size(1, 1).origin(0, 1.6, 0).pinTopCorners();
+        Simulation sim = b.build().simulation(new SolverSettings().substeps(10));
+        if (spinning) sim.add(new Sphere(SpherePath.fixed(0, 0.9, 0), 0.3, 0.01, 0.8, 0.6).spin(0, 2, 0));
+        else sim.add(new Sphere(SpherePath.linear(0, 1.05, 0.8, 0, 0, -0.25), 0.2, 0.01, 0.5, 0.35));
+        return sim;
+    }
+
     /** Runs until the largest speed falls below {@code speed} m/s or maxSteps pass; returns steps run. */
     static int settle(Simulation sim, double speed, int maxSteps) {
         Particles p = sim.particles();

@@ -1,9 +1,10 @@
-package xpbdcloth.engine;
+package xpbdcloth.scene;
 
 import static org.junit.jupiter.api.Assertions.*;
 
 import org.junit.jupiter.api.Test;
-import xpbdcloth.scene.Scene;
+import xpbdcloth.engine.ConstraintMode;
+import xpbdcloth.engine.Simulation;
 
 /** Same scene, same parameters: bitwise-identical positions, also across a mid-run mode switch. */
 class DeterminismTest {

@@ -1,0 +1,54 @@
+package xpbdcloth;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The layering is one-way: tools → sketch → scene/experiments → engine. The engine (and its tests)
+ * imports nothing of the layers above it nor of Processing; the scene package nothing of the sketch,
+ * the tools or the experiments. Read from the source text, so a wrong import fails here by name.
+ */
+class LayeringTest {
+    static final Pattern IMPORT = Pattern.compile("^import\\s+(static\\s+)?([\\w.]+)", Pattern.MULTILINE);
+
+    static List<String> violations(Path dir, String... forbidden) throws IOException {
+        List<String> out = new ArrayList<>();
+        try (Stream<Path> files = Files.walk(dir)) {
+            for (Path f : (Iterable<Path>) files.filter(p -> p.toString().endsWith(".java"))::iterator) {
+                Matcher m = IMPORT.matcher(Files.readString(f));
+                while (m.find())
+                    for (String prefix : forbidden)
+                        if (m.group(2).startsWith(prefix)) out.add(f + " imports " + m.group(2));
+            }
+        }
+        return out;
+    }
+
+    @Test
+    void engineImportsNothingAboveIt() throws IOException {
+        String[] above = {"xpbdcloth.scene", "xpbdcloth.sketch", "xpbdcloth.experiments", "xpbdcloth.tools", "processing."};
+        assertEquals(List.of(), violations(Path.of("src/xpbdcloth/engine"), above));
+        assertEquals(List.of(), violations(Path.of("test/xpbdcloth/engine"), above));
+    }
+
+    @Test
+    void sceneImportsNoSketchToolsOrExperiments() throws IOException {
+        String[] above = {"xpbdcloth.sketch", "xpbdcloth.experiments", "xpbdcloth.tools", "processing."};
+        assertEquals(List.of(), violations(Path.of("src/xpbdcloth/scene"), above));
+    }
+
+    /** The scanner itself finds an import it should (so the two tests above cannot pass vacuously). */
+    @Test
+    void theScannerSeesImports() throws IOException {
+        assertFalse(violations(Path.of("src/xpbdcloth/sketch"), "processing.").isEmpty());
+    }
+}
