@@ -39,13 +39,13 @@ final class GlobalSolver {
     /**
      * Levenberg–Marquardt damping μ: the matrix solved is J W Jᵀ + μ·diag(J W Jᵀ) + α̃. Hard constraints
      * (α = 0) outnumber the degrees of freedom of a cloth with all three families (4865 against 3066 at
-     * 32²), so J W Jᵀ alone is singular, and where pins pull the cloth wider than its rest shape the
-     * linearised hard system has no solution at all; conjugate gradients then grew Δλ without bound
-     * (100 iterations every time, 38 of 40 steps rejected, the corners scene torn to 1000× its size).
-     * The damping changes the step, never the solution: at C + α̃λ = 0 the right-hand side is 0 and so
-     * is Δλ, so XPBD's equilibria stay exact (Nocedal and Wright 2006, §10.3).
+     * 32²), so J W Jᵀ alone is only semi-definite; the damping makes it definite, so conjugate gradients
+     * and the multigrid's coarse Cholesky have a unique answer. It changes the step, never the solution:
+     * at C + α̃λ = 0 the right-hand side is 0 and so is Δλ (Nocedal and Wright 2006, §10.3). It does not
+     * make an infeasible hard system feasible (pins pulled wider than a hard cloth's rest shape): that
+     * cloth still tears, finitely; see the README's Robustness section.
      */
-    static final double DAMPING = Double.parseDouble(System.getProperty("xpbd.damping", "1e-6"));
+    static final double DAMPING = 1e-6;
     /** Armijo's sufficient-decrease constant: any small positive value; 1e-4 is the textbook one. */
     static final double ARMIJO = 1e-4;
     /** The shortest step the line search tries before it gives the iteration up. */

@@ -101,9 +101,9 @@ class NeverNaNTest {
     }
 
     /**
-     * Hard constraints (α = 0) under a global solver: the redundant system is singular, and before the
-     * damping and the line search conjugate gradients tore the cloth to 1000× its size in 12 steps.
-     * Now it must stay finite and hold its edges within 10 % while it swings from two corners.
+     * Hard constraints (α = 0) under a global solver: 12 × 12 with all three families is 625 constraints
+     * on 426 degrees of freedom, a singular J W Jᵀ. The damped, line-searched solve must still hold a
+     * cloth hanging from two corners: finite, every edge within 0.1 % of its rest length.
      */
     @Test
     void hardConstraintsUnderAGlobalSolverStayFiniteAndHold() {
@@ -116,9 +116,9 @@ class NeverNaNTest {
                 sim.step();
                 worst = Math.max(worst, Metrics.maxStrain(sim, ConstraintFamily.STRUCTURAL));
             }
-            System.out.printf("hard 12x12 cloth under %s: max strain %.4f over 100 steps%n", type.label(), worst);
+            System.out.printf("hard 12x12 cloth under %s: max strain %.2e over 100 steps%n", type.label(), worst);
             assertTrue(Metrics.allFinite(sim.particles()), type.label());
-            assertTrue(worst < 0.1, type.label() + " max strain " + worst);
+            assertTrue(worst < 1e-3, type.label() + " max strain " + worst);
         }
     }
 
