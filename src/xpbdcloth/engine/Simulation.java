@@ -228,20 +228,22 @@ public final class Simulation {
 
     /** Restores the state before the step, replays it with a probe to find the culprit, restores again. */
     private SimulationDivergedException diverged(double dt) {
-        snapshot.restore(particles, spheres);
-        time = snapshot.time;
-        stepCount = snapshot.stepCount;
+        restoreSnapshot();
         Probe probe = new Probe();
         try {
             run(dt, probe);
         } catch (Probe.Found found) {
             // the probe has recorded where
         }
+        restoreSnapshot();
+        // A step whose replay stays finite cannot happen in a deterministic engine; say "solve" if it does.
+        return new SimulationDivergedException(stepCount + 1, probe.stage == null ? Stage.SOLVE : probe.stage, probe.family);
+    }
+
+    private void restoreSnapshot() {
         snapshot.restore(particles, spheres);
         time = snapshot.time;
         stepCount = snapshot.stepCount;
-        // A step whose replay stays finite cannot happen in a deterministic engine; say "solve" if it does.
-        return new SimulationDivergedException(stepCount + 1, probe.stage == null ? Stage.SOLVE : probe.stage, probe.family);
     }
 
     /** Finds the first stage and constraint family of a replayed step that leave a non-finite number. */

@@ -174,7 +174,7 @@ public final class SketchState {
     /** Gauss–Seidel → Jacobi-PCG → multigrid-PCG → Gauss–Seidel, for the running scenes. */
     public void cycleSolver() {
         if (sideBySide || mode == ConstraintMode.PBD) {
-            error((sideBySide ? "side by side runs PBD on the left" : "PBD mode") + ", which needs Gauss-Seidel: the solver stays gauss-seidel (press m for XPBD)");
+            error((sideBySide ? "side by side runs PBD on the left" : "PBD mode") + ", which needs Gauss-Seidel: the solver is unchanged (press m for XPBD)");
             return;
         }
         SolverType[] all = SolverType.values();
