@@ -142,4 +142,38 @@ class NeverNaNTest {
         double x = dt * c * area / (3 * m);
         for (int i = 0; i < 3; i++) assertEquals(u * (1 - Math.exp(-x)), p.vz(i), 1e-12, "corner " + i);
     }
+
+    /**
+     * In still air the drag can only take energy: on a crumpled random mesh with random velocities, every
+     * particle's drag force points against its own velocity (F·vᵢ ≤ 0). With the triangle's mean velocity a
+     * particle was pushed along by its neighbours' motion (here particle 2 gained 0.024 W), which
+     * is how a stretched cloth in a strong wind gained energy until it overflowed.
+     */
+    @Test
+    void stillAirDragNeverPushesAParticleAlong() {
+        java.util.Random rnd = new java.util.Random(7);
+        int side = 6, n = side * side;
+        Particles p = new Particles(n);
+        for (int i = 0; i < n; i++) {
+            p.setPosition(i, i % side + 0.4 * rnd.nextGaussian(), i / side + 0.4 * rnd.nextGaussian(), 0.4 * rnd.nextGaussian());
+            p.setVelocity(i, rnd.nextGaussian(), rnd.nextGaussian(), rnd.nextGaussian());
+            p.setMass(i, 0.01);
+        }
+        int[] tris = new int[(side - 1) * (side - 1) * 6];
+        int k = 0;
+        for (int r = 0; r + 1 < side; r++)
+            for (int c = 0; c + 1 < side; c++) {
+                int i = r * side + c;
+                tris[k++] = i; tris[k++] = i + side; tris[k++] = i + 1;
+                tris[k++] = i + 1; tris[k++] = i + side; tris[k++] = i + side + 1;
+            }
+        new Wind(tris, 0, 0, 0, 2.0, 0).apply(p, 0, 0.01);
+        int draggedAgainst = 0;
+        for (int i = 0; i < n; i++) {
+            double work = p.force[3 * i] * p.vx(i) + p.force[3 * i + 1] * p.vy(i) + p.force[3 * i + 2] * p.vz(i);
+            assertTrue(work <= 1e-15, "particle " + i + ": F.v = " + work);
+            if (work < -1e-6) draggedAgainst++;
+        }
+        assertTrue(draggedAgainst > n / 2, "the drag acts at all: " + draggedAgainst + " of " + n);
+    }
 }
