@@ -13,7 +13,7 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
 /**
- * The layering is one-way: tools → sketch → scene/experiments → engine. The engine (and its tests)
+ * The layering is one-way: tools → sketch → scene/experiments → engine → mesh. The engine (and its tests)
  * imports nothing of the layers above it nor of Processing; the scene package nothing of the sketch,
  * the tools or the experiments. Read from the source text, so a wrong import fails here by name.
  */
@@ -38,6 +38,13 @@ class LayeringTest {
         String[] above = {"xpbdcloth.scene", "xpbdcloth.sketch", "xpbdcloth.experiments", "xpbdcloth.tools", "processing."};
         assertEquals(List.of(), violations(Path.of("src/xpbdcloth/engine"), above));
         assertEquals(List.of(), violations(Path.of("test/xpbdcloth/engine"), above));
+    }
+
+    /** Meshes are below the engine: geometry and files, no physics, nothing of the project at all. */
+    @Test
+    void meshImportsNothingOfTheProject() throws IOException {
+        String[] project = {"xpbdcloth.engine", "xpbdcloth.scene", "xpbdcloth.sketch", "xpbdcloth.experiments", "xpbdcloth.tools", "processing."};
+        assertEquals(List.of(), violations(Path.of("src/xpbdcloth/mesh"), project));
     }
 
     @Test

@@ -2,35 +2,51 @@ package xpbdcloth.engine;
 
 import java.util.Collections;
 import java.util.List;
+import xpbdcloth.mesh.ClothMesh;
 
 /**
- * A rectangular grid cloth as built by {@link ClothBuilder}: its particles, constraints by family and the
- * triangles a renderer or an aerodynamic force needs. Particle (row, col) has index row·columns + col;
- * row 0 is the top (or far) edge.
+ * A cloth as built by {@link MeshClothBuilder} (or by {@link ClothBuilder}, which makes a grid mesh): its
+ * particles (one per mesh vertex, same order), its constraints in Gauss–Seidel order, and the mesh it was
+ * built from, whose triangles a renderer, an aerodynamic force or an exporter needs. A grid cloth also
+ * answers to (row, col): particle index row·columns + col, row 0 the top (or far) edge.
  */
 public final class Cloth {
     private final Particles particles;
+    private final ClothMesh mesh;
     private final int columns, rows;
     private final List<Constraint> constraints;
     private final int[] triangles;
 
-    Cloth(Particles particles, int columns, int rows, List<Constraint> constraints, int[] triangles) {
+    Cloth(Particles particles, ClothMesh mesh, int columns, int rows, List<Constraint> constraints) {
         this.particles = particles;
+        this.mesh = mesh;
         this.columns = columns;
         this.rows = rows;
         this.constraints = Collections.unmodifiableList(constraints);
-        this.triangles = triangles;
+        this.triangles = mesh.triangles();
     }
 
     public Particles particles() { return particles; }
-    public int columns() { return columns; }
-    public int rows() { return rows; }
     public List<Constraint> constraints() { return constraints; }
 
-    /** Particle indices, three per triangle, counter-clockwise seen from +z (vertical) or +y (horizontal). */
+    /** The rest mesh: faces, groups and the vertex order the particles follow. */
+    public ClothMesh mesh() { return mesh; }
+
+    /** True for a cloth made by {@link ClothBuilder}, which {@link #index} can address by row and column. */
+    public boolean isGrid() { return columns > 0; }
+
+    /** Grid columns, 0 for a cloth that is not a grid. */
+    public int columns() { return columns; }
+
+    /** Grid rows, 0 for a cloth that is not a grid. */
+    public int rows() { return rows; }
+
+    /** Particle indices, three per triangle, counter-clockwise seen from the front (+z for a vertical grid, +y for a horizontal one). */
     public int[] triangles() { return triangles; }
 
     public int index(int row, int col) {
+        if (!isGrid())
+            throw new IllegalArgumentException("row and col address a grid cloth; this cloth is a mesh of " + particles.count() + " vertices, was (" + row + ", " + col + ")");
         Check.index("row", row, rows);
         Check.index("col", col, columns);
         return row * columns + col;

@@ -4,17 +4,20 @@ import java.util.ArrayList;
 import java.util.EnumMap;
 import java.util.List;
 import java.util.Map;
+import xpbdcloth.mesh.ClothMesh;
 
 /**
  * Builds a grid cloth: columns × rows particles spanning width × height metres, hanging in the x–y plane
  * (top edge at the origin's height) or lying in the x–z plane, with the constraint families asked for.
- * A rope is a cloth of one column.
+ * A rope is a cloth of one column. The grid is one generator of a {@link ClothMesh} ({@link #mesh()});
+ * {@link MeshClothBuilder} derives the constraints from it as from any other mesh.
  *
  * <p>Mass: either an areal density (kg/m²) or a total mass (kg), lumped to the particles by the grid area
  * (or length) each one stands for, so edge particles weigh half an interior one and corners a quarter.
  *
- * <p>Constraint order (the Gauss–Seidel order): structural row-major (each particle's right then lower
- * edge), then shear, then bend.
+ * <p>Constraint order (the Gauss–Seidel order), as the mesh's sorted topology gives it: structural
+ * row-major (each particle's right then lower edge), then shear per quad, then bend (each particle's row
+ * run then its column run).
  */
 public final class ClothBuilder {
     /** Orientation of the rest shape. */
@@ -78,11 +81,7 @@ public final class ClothBuilder {
 
     /** Includes a family with PBD stiffness k ∈ [0,1] and XPBD compliance α ≥ 0 (m/N). */
     public ClothBuilder family(ConstraintFamily family, double stiffness, double compliance) {
-        if (family == null || family == ConstraintFamily.COLLISION || family == ConstraintFamily.ATTACHMENT)
-            throw new IllegalArgumentException("family must be STRUCTURAL, SHEAR or BEND, was " + family);
-        Check.inRange("stiffness", stiffness, 0, 1);
-        Check.nonNegative("compliance", compliance);
-        families.put(family, new double[] {stiffness, compliance});
+        families.put(family, MeshClothBuilder.material(family, stiffness, compliance));
         return this;
     }
 
@@ -111,55 +110,37 @@ public final class ClothBuilder {
         }
         if (Double.isNaN(totalMass) && area() == 0)
             throw new IllegalArgumentException("arealDensity needs a cloth of non-zero area (use totalMass for a zero-area cloth), area was 0.0");
-        Particles p = new Particles(columns * rows);
+        MeshClothBuilder b = new MeshClothBuilder(mesh()).masses(masses()).withoutFamily(ConstraintFamily.STRUCTURAL);
+        families.forEach((family, kAlpha) -> b.family(family, kAlpha[0], kAlpha[1]));
+        for (int[] pin : pins) b.pin(pin[0] * columns + (pin[1] < 0 ? columns + pin[1] : pin[1]));
+        return b.build(columns, rows);
+    }
+
+    /**
+     * The grid as a mesh: quads (i, i + columns, i + columns + 1, i + 1), counter-clockwise seen from the
+     * front, split along alternating diagonals so the mesh has no preferred shear direction; a single row
+     * or column is a polyline.
+     */
+    public ClothMesh mesh() {
         double dx = columns > 1 ? width / (columns - 1) : 0;
         double dy = rows > 1 ? height / (rows - 1) : 0;
-        double mass = Double.isNaN(totalMass) ? arealDensity * area() : totalMass;
-        double weightSum = lumpWeightSum(columns) * lumpWeightSum(rows);
+        double[] x = new double[3 * columns * rows];
         for (int r = 0; r < rows; r++) {
             for (int c = 0; c < columns; c++) {
-                int i = r * columns + c;
+                int i = 3 * (r * columns + c);
                 double u = c * dx - 0.5 * width * (columns > 1 ? 1 : 0), t = r * dy;
-                if (plane == Plane.VERTICAL) p.setPosition(i, originX + u, originY - t, originZ);
-                else p.setPosition(i, originX + u, originY, originZ - 0.5 * height * (rows > 1 ? 1 : 0) + t);
-                p.setMass(i, mass * lumpWeight(c, columns) * lumpWeight(r, rows) / weightSum);
+                if (plane == Plane.VERTICAL) { x[i] = originX + u; x[i + 1] = originY - t; x[i + 2] = originZ; }
+                else { x[i] = originX + u; x[i + 1] = originY; x[i + 2] = originZ - 0.5 * height * (rows > 1 ? 1 : 0) + t; }
             }
         }
-        for (int[] pin : pins) p.pin(pin[0] * columns + (pin[1] < 0 ? columns + pin[1] : pin[1]));
-
-        List<Constraint> cs = new ArrayList<>();
-        double[] structural = families.get(ConstraintFamily.STRUCTURAL);
-        if (structural != null) {
-            for (int r = 0; r < rows; r++)
-                for (int c = 0; c < columns; c++) {
-                    int i = r * columns + c;
-                    if (c + 1 < columns) cs.add(tuned(DistanceConstraint.between(p, i, i + 1), ConstraintFamily.STRUCTURAL, structural));
-                    if (r + 1 < rows) cs.add(tuned(DistanceConstraint.between(p, i, i + columns), ConstraintFamily.STRUCTURAL, structural));
-                }
-        }
-        double[] shear = families.get(ConstraintFamily.SHEAR);
-        if (shear != null) {
-            for (int r = 0; r + 1 < rows; r++)
-                for (int c = 0; c + 1 < columns; c++) {
-                    int i = r * columns + c;
-                    cs.add(tuned(ShearConstraint.atCurrentAngle(ConstraintFamily.SHEAR, p, i, i + 1, i + columns), ConstraintFamily.SHEAR, shear));
-                }
-        }
-        double[] bend = families.get(ConstraintFamily.BEND);
-        if (bend != null) {
-            for (int r = 0; r < rows; r++)
-                for (int c = 0; c < columns; c++) {
-                    int i = r * columns + c;
-                    if (c + 2 < columns) cs.add(tuned(BendConstraint.atCurrentShape(ConstraintFamily.BEND, p, i, i + 1, i + 2), ConstraintFamily.BEND, bend));
-                    if (r + 2 < rows) cs.add(tuned(BendConstraint.atCurrentShape(ConstraintFamily.BEND, p, i, i + columns, i + 2 * columns), ConstraintFamily.BEND, bend));
-                }
-        }
-        int[] tris = new int[Math.max(0, (columns - 1) * (rows - 1)) * 6];
-        int n = 0;
+        if (columns == 1 || rows == 1) return ClothMesh.polyline(x);
+        int[][] quads = new int[(columns - 1) * (rows - 1)][];
+        int[] tris = new int[quads.length * 6];
+        int q = 0, n = 0;
         for (int r = 0; r + 1 < rows; r++)
             for (int c = 0; c + 1 < columns; c++) {
                 int i = r * columns + c;
-                // Alternate the diagonal so the mesh has no preferred shear direction.
+                quads[q++] = new int[] {i, i + columns, i + columns + 1, i + 1};
                 if (((r + c) & 1) == 0) {
                     tris[n++] = i; tris[n++] = i + columns; tris[n++] = i + 1;
                     tris[n++] = i + 1; tris[n++] = i + columns; tris[n++] = i + columns + 1;
@@ -168,18 +149,22 @@ public final class ClothBuilder {
                     tris[n++] = i; tris[n++] = i + columns + 1; tris[n++] = i + 1;
                 }
             }
-        return new Cloth(p, columns, rows, cs, tris);
+        return ClothMesh.of(x, quads, tris, null, null);
+    }
+
+    /** Mass lumped by the grid area (or length) each particle stands for: half on an edge, a quarter at a corner. */
+    private double[] masses() {
+        double mass = Double.isNaN(totalMass) ? arealDensity * area() : totalMass;
+        double weightSum = lumpWeightSum(columns) * lumpWeightSum(rows);
+        double[] m = new double[columns * rows];
+        for (int r = 0; r < rows; r++)
+            for (int c = 0; c < columns; c++) m[r * columns + c] = mass * lumpWeight(c, columns) * lumpWeight(r, rows) / weightSum;
+        return m;
     }
 
     private double area() {
         double w = columns > 1 ? width : 1, h = rows > 1 ? height : 1;
         return w * h;
-    }
-
-    private static Constraint tuned(Constraint c, ConstraintFamily family, double[] kAlpha) {
-        c.setStiffness(kAlpha[0]);
-        c.setCompliance(kAlpha[1]);
-        return c;
     }
 
     /** Share of a particle along one grid direction: half at the ends, whole inside, 1 for a single one. */

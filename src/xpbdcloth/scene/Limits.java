@@ -73,4 +73,12 @@ public final class Limits {
     public static final Range WIND_SPEED = new Range(-100, 100, "m/s");
     public static final Range DRAG = new Range(0, 10, "kg/(m²·s)");
     public static final Range GUST = new Range(0, 1, "");
+    /** Vertices of a mesh cloth after welding: as many as the largest grid. */
+    public static final Range MESH_VERTICES = new Range(2, 512 * 512, "vertices");
+    /** A mesh file's uniform scale (its units to metres). */
+    public static final Range MESH_SCALE = new Range(1e-4, 1e4, "");
+    /** Each rotation angle of a mesh file, degrees. */
+    public static final Range ROTATION = new Range(-360, 360, "degrees");
+    /** Distance within which a mesh file's vertices are welded, in the file's units. */
+    public static final Range WELD = new Range(0, 1, "");
 }

@@ -7,6 +7,7 @@ import java.util.Map;
 import xpbdcloth.engine.ClothBuilder;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.ConstraintMode;
+import xpbdcloth.mesh.ClothMesh;
 
 /**
  * Everything a scene is made of, as read from a preset file by {@link PresetLoader}: the cloth, its
@@ -37,22 +38,48 @@ public final class Preset {
         this.wind = wind;
     }
 
-    /** The grid: resolution, size (m), plane, origin (m), mass, pinned (row, col) pairs. */
+    /**
+     * The cloth: a grid (resolution, size in m, plane, origin in m, pinned (row, col) pairs) or a mesh
+     * (loaded, welded and placed; pinned vertex indices), and its mass.
+     */
     public static final class Cloth {
+        /** Grid only (0 for a mesh). */
         public final int columns, rows;
         public final double width, height;
         public final ClothBuilder.Plane plane;
         public final double[] origin;
         /** Exactly one of these is finite. */
         public final double arealDensity, totalMass;
+        /** Grid only: pinned (row, col). */
         public final List<int[]> pins;
+        /** Mesh only (null for a grid): the mesh in scene coordinates, and where it came from. */
+        public final ClothMesh mesh;
+        public final String meshFile;
+        /** Mesh only: pinned vertex indices, ascending, each once. */
+        public final int[] pinnedVertices;
 
         Cloth(int columns, int rows, double width, double height, ClothBuilder.Plane plane, double[] origin,
               double arealDensity, double totalMass, List<int[]> pins) {
             this.columns = columns; this.rows = rows; this.width = width; this.height = height;
             this.plane = plane; this.origin = origin; this.arealDensity = arealDensity; this.totalMass = totalMass;
             this.pins = Collections.unmodifiableList(pins);
+            this.mesh = null;
+            this.meshFile = null;
+            this.pinnedVertices = new int[0];
         }
+
+        Cloth(ClothMesh mesh, String meshFile, double arealDensity, double totalMass, int[] pinnedVertices) {
+            this.columns = 0; this.rows = 0; this.width = 0; this.height = 0; this.plane = null; this.origin = new double[3];
+            this.arealDensity = arealDensity; this.totalMass = totalMass; this.pins = List.of();
+            this.mesh = mesh;
+            this.meshFile = meshFile;
+            this.pinnedVertices = pinnedVertices.clone();
+        }
+
+        public boolean isMesh() { return mesh != null; }
+
+        /** The particle a pin motion names: (row, col) on a grid. */
+        int vertex(int row, int col) { return row * columns + col; }
     }
 
     /** PBD stiffness k ∈ [0,1] and XPBD compliance α ≥ 0 of one family. */
@@ -102,14 +129,14 @@ public final class Preset {
         }
     }
 
-    /** A pinned particle moved by displacement (m) over [start, start + duration] s, eased, then held. */
+    /** A pinned particle (vertex index) moved by displacement (m) over [start, start + duration] s, eased, then held. */
     public static final class PinMotion {
-        public final int row, col;
+        public final int vertex;
         public final double[] displacement;
         public final double start, duration;
 
-        PinMotion(int row, int col, double[] displacement, double start, double duration) {
-            this.row = row; this.col = col; this.displacement = displacement; this.start = start; this.duration = duration;
+        PinMotion(int vertex, double[] displacement, double start, double duration) {
+            this.vertex = vertex; this.displacement = displacement; this.start = start; this.duration = duration;
         }
     }
 

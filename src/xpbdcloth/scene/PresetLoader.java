@@ -21,6 +21,9 @@ import java.util.TreeSet;
 import xpbdcloth.engine.ClothBuilder;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.ConstraintMode;
+import xpbdcloth.mesh.ClothMesh;
+import xpbdcloth.mesh.MeshFileException;
+import xpbdcloth.mesh.ObjReader;
 
 /**
  * Reads scene presets (JSON) strictly: bad syntax, a missing or unknown field, a wrong type or a value out
@@ -29,7 +32,7 @@ import xpbdcloth.engine.ConstraintMode;
  */
 public final class PresetLoader {
     /** The presets that ship with the project, in the order the sketch offers them. */
-    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain");
+    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth");
 
     private static final ObjectMapper JSON = new ObjectMapper()
             .enable(JsonParser.Feature.STRICT_DUPLICATE_DETECTION);
@@ -41,10 +44,31 @@ public final class PresetLoader {
         String file = name + ".json";
         try (InputStream in = PresetLoader.class.getResourceAsStream("/presets/" + file)) {
             if (in == null) throw new PresetException(name, "(file)", "no built-in preset of that name; built-in: " + String.join(", ", BUILT_IN));
-            return parse(file, new String(in.readAllBytes(), StandardCharsets.UTF_8));
+            String text = new String(in.readAllBytes(), StandardCharsets.UTF_8);
+            return parse(file, text, PresetLoader::builtInMesh);
         } catch (IOException e) {
             throw new PresetException(file, "(file)", "cannot be read: " + e.getMessage());
         }
+    }
+
+    /** A mesh file beside the built-in presets (in the jar). */
+    private static ClothMesh builtInMesh(String name, double weld) {
+        try (InputStream in = PresetLoader.class.getResourceAsStream("/presets/" + name)) {
+            if (in == null) throw new MeshFileException(name, 0, "no such file beside the built-in presets");
+            return ObjReader.parse(name, new String(in.readAllBytes(), StandardCharsets.UTF_8), weld);
+        } catch (IOException e) {
+            throw new MeshFileException(name, 0, "cannot be read: " + e.getMessage());
+        }
+    }
+
+    /** Where a preset's mesh file is found: by its name relative to the preset. */
+    interface MeshFiles {
+        ClothMesh load(String relativeName, double weld);
+    }
+
+    /** Mesh files relative to a folder. */
+    private static MeshFiles besides(Path folder) {
+        return (name, weld) -> ObjReader.read(folder.resolve(name), weld);
     }
 
     /** A preset file on disk. */
@@ -53,7 +77,8 @@ public final class PresetLoader {
         if (Files.isDirectory(path)) throw new PresetException(file, "(file)", "is a directory, not a preset file");
         if (!Files.exists(path)) throw new PresetException(file, "(file)", "does not exist");
         try {
-            return parse(file, Files.readString(path, StandardCharsets.UTF_8));
+            Path folder = path.toAbsolutePath().getParent();
+            return parse(file, Files.readString(path, StandardCharsets.UTF_8), besides(folder));
         } catch (IOException e) {
             throw new PresetException(file, "(file)", "cannot be read: " + e.getMessage());
         }
@@ -65,8 +90,13 @@ public final class PresetLoader {
         return load(Path.of(nameOrPath));
     }
 
-    /** Parses preset text; {@code file} names it in errors. */
+    /** Parses preset text; {@code file} names it in errors; a mesh file is looked up beside it. */
     public static Preset parse(String file, String text) {
+        Path parent = Path.of(file).toAbsolutePath().getParent();
+        return parse(file, text, besides(parent == null ? Path.of("").toAbsolutePath() : parent));
+    }
+
+    static Preset parse(String file, String text, MeshFiles meshes) {
         if (text.isBlank()) throw new PresetException(file, "(file)", "is empty");
         JsonNode root;
         try {
@@ -75,7 +105,7 @@ public final class PresetLoader {
             String where = e.getLocation() == null ? "" : " at line " + e.getLocation().getLineNr() + " column " + e.getLocation().getColumnNr();
             throw new PresetException(file, "(syntax)", "not valid JSON" + where + ": " + e.getOriginalMessage());
         }
-        return new Reader(file).preset(new Node(root, ""));
+        return new Reader(file, meshes).preset(new Node(root, ""));
     }
 
     /** A JSON value and its path, for messages. */
@@ -93,8 +123,12 @@ public final class PresetLoader {
 
     private static final class Reader {
         final String file;
+        final MeshFiles meshes;
 
-        Reader(String file) { this.file = file; }
+        Reader(String file, MeshFiles meshes) {
+            this.file = file;
+            this.meshes = meshes;
+        }
 
         PresetException fail(String field, String problem) {
             return new PresetException(file, field.isEmpty() ? "(root)" : field, problem);
@@ -119,6 +153,7 @@ public final class PresetLoader {
         }
 
         Preset.Cloth cloth(Node n) {
+            if (n.json.isObject() && n.json.has("mesh")) return meshCloth(n);
             object(n, Set.of("columns", "rows", "width", "height", "plane", "origin", "arealDensity", "totalMass", "pins"));
             int columns = integer(required(n, "columns"), Limits.RESOLUTION);
             int rows = integer(required(n, "rows"), Limits.RESOLUTION);
@@ -138,6 +173,75 @@ public final class PresetLoader {
             Node ps = optional(n, "pins");
             if (ps != null) for (Node p : array(ps)) pins.addAll(pinned(p, columns, rows));
             return new Preset.Cloth(columns, rows, width, height, plane, origin, arealDensity, totalMass, pins);
+        }
+
+        /** A cloth from a mesh file: placed by scale, rotation and translation; pinned by index, group or box. */
+        Preset.Cloth meshCloth(Node n) {
+            object(n, Set.of("mesh", "arealDensity", "totalMass", "pins"));
+            Node m = required(n, "mesh");
+            object(m, Set.of("file", "weld", "scale", "rotation", "translation"));
+            Node f = required(m, "file");
+            String name = string(f);
+            Node w = optional(m, "weld"), sc = optional(m, "scale"), r = optional(m, "rotation"), t = optional(m, "translation");
+            double weld = w == null ? 1e-6 : number(w, Limits.WELD);
+            double scale = sc == null ? 1 : number(sc, Limits.MESH_SCALE);
+            double[] rotation = r == null ? new double[3] : vector(r, Limits.ROTATION);
+            double[] translation = t == null ? new double[3] : vector(t, Limits.POSITION);
+            ClothMesh mesh;
+            try {
+                mesh = meshes.load(name, weld);
+            } catch (MeshFileException e) {
+                throw fail(f.path, e.getMessage());
+            } catch (IllegalArgumentException e) {
+                throw fail(f.path, name + ": " + e.getMessage());
+            }
+            if (!Limits.MESH_VERTICES.contains(mesh.vertexCount()))
+                throw fail(f.path, name + ": must have " + Limits.MESH_VERTICES.text() + " vertices after welding, had " + mesh.vertexCount());
+            mesh = mesh.transformed(scale, rotation, translation);
+            for (int i = 0; i < mesh.vertexCount(); i++)
+                if (!Limits.POSITION.contains(mesh.x(i)) || !Limits.POSITION.contains(mesh.y(i)) || !Limits.POSITION.contains(mesh.z(i)))
+                    throw fail(m.path, "vertex " + i + " lands at (" + mesh.x(i) + ", " + mesh.y(i) + ", " + mesh.z(i) + "), outside " + Limits.POSITION.text() + " m");
+            Node ad = optional(n, "arealDensity"), tm = optional(n, "totalMass");
+            if ((ad == null) == (tm == null)) throw fail(n.path, "needs exactly one of arealDensity (kg/m²) and totalMass (kg)");
+            double arealDensity = ad == null ? Double.NaN : number(ad, Limits.AREAL_DENSITY);
+            double totalMass = tm == null ? Double.NaN : number(tm, Limits.TOTAL_MASS);
+            if (ad != null && mesh.area() == 0) throw fail(ad.path, "needs a mesh with faces of non-zero area (" + name + " has none); use totalMass");
+            TreeSet<Integer> pinned = new TreeSet<>();
+            Node ps = optional(n, "pins");
+            if (ps != null) for (Node p : array(ps)) for (int v : meshPins(p, mesh)) pinned.add(v);
+            return new Preset.Cloth(mesh, name, arealDensity, totalMass, pinned.stream().mapToInt(Integer::intValue).toArray());
+        }
+
+        /** A vertex index, {"group": name} (an OBJ g/o name) or {"box": {"min": [x,y,z], "max": [x,y,z]}} in scene coordinates. */
+        int[] meshPins(Node p, ClothMesh mesh) {
+            if (p.json.isNumber()) return new int[] {vertexIndex(p, mesh)};
+            if (!p.json.isObject()) throw fail(p.path, "must be a vertex index, {\"group\": name} or {\"box\": {\"min\": [x, y, z], \"max\": [x, y, z]}}, was " + describe(p.json));
+            object(p, Set.of("group", "box"));
+            if (p.json.size() != 1) throw fail(p.path, "must have exactly one of group, box");
+            Node g = optional(p, "group");
+            if (g != null) {
+                try {
+                    return mesh.group(string(g));
+                } catch (PresetException e) {
+                    throw e;
+                } catch (IllegalArgumentException e) {
+                    throw fail(g.path, e.getMessage().replaceFirst("^group ", ""));
+                }
+            }
+            Node b = required(p, "box");
+            object(b, Set.of("min", "max"));
+            double[] min = vector(required(b, "min"), Limits.POSITION), max = vector(required(b, "max"), Limits.POSITION);
+            for (int d = 0; d < 3; d++)
+                if (min[d] > max[d]) throw fail(b.child("max") + "[" + d + "]", "must be >= min[" + d + "] (" + min[d] + "), was " + max[d]);
+            int[] in = mesh.inBox(min, max);
+            if (in.length == 0) throw fail(b.path, "contains no vertex of the mesh (a pin box that pins nothing is a mistake)");
+            return in;
+        }
+
+        int vertexIndex(Node p, ClothMesh mesh) {
+            int v = integer(p);
+            if (v < 0 || v >= mesh.vertexCount()) throw fail(p.path, "must be a vertex index in [0, " + (mesh.vertexCount() - 1) + "], was " + v);
+            return v;
         }
 
         static final String PIN_NAMES = "top-left, top-right, bottom-left, bottom-right, top-edge, bottom-edge, left-edge, right-edge";
@@ -247,14 +351,21 @@ public final class PresetLoader {
         Preset.PinMotion pinMotion(Node n, Preset.Cloth cloth) {
             object(n, Set.of("pin", "displacement", "start", "duration"));
             Node pn = required(n, "pin");
-            List<int[]> named = pinned(pn, cloth.columns, cloth.rows);
-            if (named.size() != 1) throw fail(pn.path, "must name one particle ([row, col] or a corner), was \"" + pn.json.asText() + "\"");
-            int[] pin = named.get(0);
-            boolean pinned = false;
-            for (int[] p : cloth.pins) pinned |= p[0] == pin[0] && p[1] == pin[1];
-            if (!pinned) throw fail(n.child("pin"), "particle [" + pin[0] + ", " + pin[1] + "] must also be listed in cloth.pins");
+            int vertex;
+            if (cloth.isMesh()) {
+                vertex = vertexIndex(pn, cloth.mesh);
+                if (Arrays.binarySearch(cloth.pinnedVertices, vertex) < 0) throw fail(pn.path, "vertex " + vertex + " must also be pinned by cloth.pins");
+            } else {
+                List<int[]> named = pinned(pn, cloth.columns, cloth.rows);
+                if (named.size() != 1) throw fail(pn.path, "must name one particle ([row, col] or a corner), was \"" + pn.json.asText() + "\"");
+                int[] pin = named.get(0);
+                boolean pinned = false;
+                for (int[] p : cloth.pins) pinned |= p[0] == pin[0] && p[1] == pin[1];
+                if (!pinned) throw fail(n.child("pin"), "particle [" + pin[0] + ", " + pin[1] + "] must also be listed in cloth.pins");
+                vertex = cloth.vertex(pin[0], pin[1]);
+            }
             Node s = optional(n, "start");
-            return new Preset.PinMotion(pin[0], pin[1], vector(required(n, "displacement"), Limits.DISPLACEMENT), s == null ? 0 : number(s, Limits.START_TIME),
+            return new Preset.PinMotion(vertex, vector(required(n, "displacement"), Limits.DISPLACEMENT), s == null ? 0 : number(s, Limits.START_TIME),
                     number(required(n, "duration"), Limits.DURATION));
         }
 

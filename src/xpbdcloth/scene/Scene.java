@@ -3,6 +3,7 @@ package xpbdcloth.scene;
 import xpbdcloth.engine.Cloth;
 import xpbdcloth.engine.ClothBuilder;
 import xpbdcloth.engine.ConstraintFamily;
+import xpbdcloth.engine.MeshClothBuilder;
 import xpbdcloth.engine.SolverSettings;
 import xpbdcloth.engine.Simulation;
 import xpbdcloth.engine.Sphere;
@@ -24,14 +25,7 @@ public final class Scene {
 
     private Scene(Preset preset) {
         this.preset = preset;
-        Preset.Cloth c = preset.cloth;
-        ClothBuilder b = new ClothBuilder().resolution(c.columns, c.rows).size(c.width, c.height).plane(c.plane)
-                .origin(c.origin[0], c.origin[1], c.origin[2]).withoutFamily(ConstraintFamily.STRUCTURAL);
-        if (Double.isNaN(c.totalMass)) b.arealDensity(c.arealDensity);
-        else b.totalMass(c.totalMass);
-        preset.families.forEach((family, m) -> b.family(family, m.stiffness, m.compliance));
-        for (int[] pin : c.pins) b.pin(pin[0], pin[1]);
-        cloth = b.build();
+        cloth = preset.cloth.isMesh() ? meshCloth(preset) : gridCloth(preset);
 
         Preset.Solver s = preset.solver;
         SolverSettings settings = new SolverSettings().mode(s.mode).iterations(s.iterations).substeps(s.substeps)
@@ -53,7 +47,7 @@ public final class Scene {
             double[] start = new double[n], duration = new double[n];
             for (int j = 0; j < n; j++) {
                 Preset.PinMotion m = preset.pinMotions.get(j);
-                ids[j] = cloth.index(m.row, m.col);
+                ids[j] = m.vertex;
                 d[j] = m.displacement;
                 start[j] = m.start;
                 duration[j] = m.duration;
@@ -69,6 +63,27 @@ public final class Scene {
                 ? new Wind(cloth.triangles(), 2, 0, 1.5, 0.5, 0.3)
                 : new Wind(cloth.triangles(), w.velocity[0], w.velocity[1], w.velocity[2], w.drag, w.gust);
         setWind(w != null);
+    }
+
+    private static Cloth gridCloth(Preset preset) {
+        Preset.Cloth c = preset.cloth;
+        ClothBuilder b = new ClothBuilder().resolution(c.columns, c.rows).size(c.width, c.height).plane(c.plane)
+                .origin(c.origin[0], c.origin[1], c.origin[2]).withoutFamily(ConstraintFamily.STRUCTURAL);
+        if (Double.isNaN(c.totalMass)) b.arealDensity(c.arealDensity);
+        else b.totalMass(c.totalMass);
+        preset.families.forEach((family, m) -> b.family(family, m.stiffness, m.compliance));
+        for (int[] pin : c.pins) b.pin(pin[0], pin[1]);
+        return b.build();
+    }
+
+    private static Cloth meshCloth(Preset preset) {
+        Preset.Cloth c = preset.cloth;
+        MeshClothBuilder b = new MeshClothBuilder(c.mesh).withoutFamily(ConstraintFamily.STRUCTURAL);
+        if (Double.isNaN(c.totalMass)) b.arealDensity(c.arealDensity);
+        else b.totalMass(c.totalMass);
+        preset.families.forEach((family, m) -> b.family(family, m.stiffness, m.compliance));
+        b.pin(c.pinnedVertices);
+        return b.build();
     }
 
     /** Builds a fresh scene from a preset (the preset is already validated). */

@@ -11,6 +11,8 @@ import processing.event.MouseEvent;
 import xpbdcloth.engine.AttachmentConstraint;
 import xpbdcloth.engine.Particles;
 import xpbdcloth.engine.Sphere;
+import xpbdcloth.mesh.ClothMesh;
+import xpbdcloth.scene.ObjExport;
 import xpbdcloth.scene.Preset;
 import xpbdcloth.scene.PresetLoader;
 import xpbdcloth.scene.Scene;
@@ -99,6 +101,7 @@ public final class ClothApp {
         framedPreset = state.preset();
         framedSideBySide = state.sideBySide();
         Preset.Cloth c = framedPreset.cloth;
+        if (c.isMesh()) { frameMesh(c.mesh); return; }
         double size = Math.max(Math.max(c.width, c.height), 0.6);
         double cx = c.origin[0], cy;
         if (c.rows == 1) { cx -= 0.5 * c.width; cy = c.origin[1] - 0.5 * c.width; } // a rope swings below its pin
@@ -110,13 +113,57 @@ public final class ClothApp {
         camera.setStartView(cx, cy, c.origin[2], distance, pitch);
     }
 
+    /** A mesh cloth is framed by its rest bounding box; a flat-lying one (it will fall and drape) from higher up. */
+    private void frameMesh(ClothMesh mesh) {
+        double[] b = bounds(mesh);
+        double size = Math.max(Math.max(b[1] - b[0], b[3] - b[2]), Math.max(b[5] - b[4], 0.6));
+        boolean lying = b[3] - b[2] < 0.2 * size;
+        double cy = lying ? b[3] - 0.3 * size : 0.5 * (b[2] + b[3]);
+        double distance = size * (framedSideBySide ? 2.6 : 1.5) + 0.4;
+        camera.setStartView(0.5 * (b[0] + b[1]), cy, 0.5 * (b[4] + b[5]), distance, lying ? -0.55 : -0.15);
+    }
+
+    /** (min x, max x, min y, max y, min z, max z) of a mesh's vertices. */
+    static double[] bounds(ClothMesh mesh) {
+        double[] b = {Double.MAX_VALUE, -Double.MAX_VALUE, Double.MAX_VALUE, -Double.MAX_VALUE, Double.MAX_VALUE, -Double.MAX_VALUE};
+        for (int i = 0; i < mesh.vertexCount(); i++) {
+            double[] p = {mesh.x(i), mesh.y(i), mesh.z(i)};
+            for (int d = 0; d < 3; d++) { b[2 * d] = Math.min(b[2 * d], p[d]); b[2 * d + 1] = Math.max(b[2 * d + 1], p[d]); }
+        }
+        return b;
+    }
+
     /** World offset along x of running scene i: the pair stands side by side, PBD on the left. */
     double offsetX(int i) {
         if (!state.sideBySide()) return 0;
         Preset.Cloth c = state.preset().cloth;
-        double gap = Math.max(c.width, 0.6) * 0.65 + 0.15;
+        double width = c.isMesh() ? bounds(c.mesh)[1] - bounds(c.mesh)[0] : c.width;
+        double gap = Math.max(width, 0.6) * 0.65 + 0.15;
         for (Preset.SphereSpec s : state.preset().spheres) gap = Math.max(gap, s.radius * 2.2);
         return i == 0 ? -gap : gap;
+    }
+
+    /**
+     * Writes each running cloth's current shape as an OBJ beside the sketch (the sketch folder in the
+     * Processing IDE, the working directory otherwise) and says where; a failure is a red notice.
+     */
+    private void exportMeshes() {
+        List<Scene> running = state.running();
+        StringBuilder written = new StringBuilder();
+        for (int i = 0; i < running.size(); i++) {
+            Scene sc = running.get(i);
+            String side = running.size() == 1 ? "" : (i == 0 ? "-pbd" : "-xpbd");
+            String name = String.format(java.util.Locale.ROOT, "xpbd-cloth-%s%s-t%.2f.obj", state.preset().name, side, sc.simulation().time());
+            File file = new File(app.sketchPath(name));
+            try {
+                ObjExport.write(file.toPath(), sc);
+                written.append(written.length() == 0 ? "" : ", ").append(file);
+            } catch (java.io.IOException | RuntimeException e) {
+                state.error("could not write " + file + ": " + e.getMessage());
+                return;
+            }
+        }
+        state.say("wrote " + written);
     }
 
     public void draw() {
@@ -138,6 +185,10 @@ public final class ClothApp {
         if (state.preset() != framedPreset || state.sideBySide() != framedSideBySide) {
             frame();
             hud.clear();
+        }
+        if (state.exportRequested) {
+            state.exportRequested = false;
+            exportMeshes();
         }
         if (state.loadRequested) {
             state.loadRequested = false;
@@ -202,7 +253,7 @@ public final class ClothApp {
     /** Real time (slow motion if steps cost too much) when interactive; a fixed count (60 Hz frames) when recording. */
     private int stepsThisFrame(double frameSeconds) {
         double dt = state.dt();
-        if (recording != null) return Math.max(1, (int) Math.round((1 / 60.0) / dt));
+        if (recording != null) return ObjExport.stepsPerFrame(dt);
         if (state.paused) {
             pacer.reset();
             return state.pendingSteps > 0 ? 1 : 0;

@@ -7,6 +7,7 @@ import xpbdcloth.engine.Constraint;
 import xpbdcloth.engine.DistanceConstraint;
 import xpbdcloth.engine.Particles;
 import xpbdcloth.engine.Sphere;
+import xpbdcloth.mesh.VertexNormals;
 import xpbdcloth.scene.Scene;
 
 /**
@@ -23,27 +24,11 @@ final class ClothRenderer {
 
     private double[] normals = new double[0];
 
-    /** Area-weighted vertex normals: the sum of the unnormalised normals of the adjacent triangles. */
+    /** Area-weighted vertex normals, into an array kept between frames. */
     private void computeNormals(Cloth cloth) {
-        Particles p = cloth.particles();
-        int n = 3 * p.count();
-        if (normals.length != n) normals = new double[n];
-        java.util.Arrays.fill(normals, 0);
-        double[] x = p.positions();
-        int[] t = cloth.triangles();
-        for (int k = 0; k < t.length; k += 3) {
-            int a = 3 * t[k], b = 3 * t[k + 1], c = 3 * t[k + 2];
-            double e1x = x[b] - x[a], e1y = x[b + 1] - x[a + 1], e1z = x[b + 2] - x[a + 2];
-            double e2x = x[c] - x[a], e2y = x[c + 1] - x[a + 1], e2z = x[c + 2] - x[a + 2];
-            double nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
-            normals[a] += nx; normals[a + 1] += ny; normals[a + 2] += nz;
-            normals[b] += nx; normals[b + 1] += ny; normals[b + 2] += nz;
-            normals[c] += nx; normals[c + 1] += ny; normals[c + 2] += nz;
-        }
-        for (int k = 0; k < n; k += 3) {
-            double l = Math.sqrt(normals[k] * normals[k] + normals[k + 1] * normals[k + 1] + normals[k + 2] * normals[k + 2]);
-            if (l > 0) { normals[k] /= l; normals[k + 1] /= l; normals[k + 2] /= l; }
-        }
+        double[] x = cloth.particles().positions();
+        if (normals.length != x.length) normals = new double[x.length];
+        VertexNormals.compute(x, cloth.triangles(), normals);
     }
 
     /**

@@ -60,7 +60,7 @@ public final class SketchState {
     private double windAngle, windSpeed;
 
     // View toggles.
-    boolean paused, wireframe, showParticles, showSpheres = true, showGrid = true, showHelp = true, loadRequested;
+    boolean paused, wireframe, showParticles, showSpheres = true, showGrid = true, showHelp = true, loadRequested, exportRequested;
     int pendingSteps;
 
     private String message = "";
