@@ -111,11 +111,11 @@ public abstract class Constraint {
         lambda -= dLambda * (1 - scale);
     }
 
-    /** Δλ for a hard constraint (k = 1, α = 0, the same in both modes), accumulated into λ. */
-    protected final double hardDeltaLambda(double C, double wGradSq) {
-        if (wGradSq <= 0) return 0;
-        double dLambda = -C / wGradSq;
-        lambda += dLambda;
-        return dLambda;
+    /**
+     * Δλ for a hard constraint (k = 1, α = 0, the same in both modes); static, because transient contacts
+     * have no constraint object to accumulate it in. 0 when nothing can move.
+     */
+    static double hardDeltaLambda(double C, double wGradSq) {
+        return wGradSq <= 0 ? 0 : -C / wGradSq;
     }
 }

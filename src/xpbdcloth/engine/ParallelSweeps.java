@@ -23,6 +23,7 @@ final class ParallelSweeps {
     private Particles particles;
     private SolverContext ctx;
     private int iterations;
+    private ContactSet contacts;
 
     ParallelSweeps(int threads) {
         this.threads = threads;
@@ -38,12 +39,13 @@ final class ParallelSweeps {
 
     int threads() { return threads; }
 
-    /** n sweeps over the coloured order, this thread taking chunk 0. */
-    void sweep(Colouring c, Particles p, SolverContext context, int n) {
+    /** n sweeps over the coloured order, each followed by the contacts, this thread taking chunk 0. */
+    void sweep(Colouring c, Particles p, SolverContext context, int n, ContactSet contactSet) {
         colouring = c;
         particles = p;
         ctx = context;
         iterations = n;
+        contacts = contactSet;
         jobGeneration++; // volatile write publishes the job
         for (Thread h : helpers) LockSupport.unpark(h);
         work(0);
@@ -69,11 +71,18 @@ final class ParallelSweeps {
         final SolverContext context = ctx;
         final Constraint[] cs = c.ordered;
         final int colours = c.colours();
+        final ContactSet touching = contacts;
+        final boolean anyContact = touching.count() > 0;
         for (int it = 0; it < iterations; it++) {
             for (int k = 0; k < colours; k++) {
                 int from = c.start[k], size = c.start[k + 1] - from;
                 int lo = from + (int) ((long) size * id / threads), hi = from + (int) ((long) size * (id + 1) / threads);
                 for (int i = lo; i < hi; i++) cs[i].project(p, context);
+                await();
+            }
+            // Contacts are few and found per substep: the calling thread takes them, the others wait.
+            if (anyContact) {
+                if (id == 0) touching.project(p, context);
                 await();
             }
         }

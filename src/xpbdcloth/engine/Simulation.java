@@ -4,16 +4,18 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * A set of particles, their constraints, kinematic spheres and scripts, stepped by a sequential
- * Gauss–Seidel solver.
+ * A set of particles, their constraints, kinematic spheres and scripts, stepped by position-based
+ * dynamics.
  *
  * <p>{@code step(dt)} gathers external forces once ({@link Stage#FORCES}) and runs, for each of s substeps
- * of h = dt/s (Macklin et al. 2019, "Small Steps"):
+ * of h = dt/s (Macklin et al. 2019, "Small Steps"), the stages of {@link Stage}, each one call in
+ * {@link #run}:
  * <ol>
  *   <li><b>predict</b>: semi-implicit Euler, v += h·(g + w·f), x_prev = x, x += h·v (free particles);</li>
  *   <li><b>kinematics</b>: scripted pins and spheres move to their place at the substep's end;</li>
- *   <li><b>reset</b>: λ = 0 for every constraint (once per substep, never per sweep);</li>
- *   <li><b>solve</b>: n sweeps, each projecting every constraint in order with the newest positions;</li>
+ *   <li><b>collide</b>: this substep's contacts are found ({@link ContactSet});</li>
+ *   <li><b>solve</b>: λ = 0 for every constraint (once per substep, never per sweep), then n sweeps or
+ *       global iterations ({@link SolveStage}), each ending with the contacts;</li>
  *   <li><b>update velocities</b>: v = (x − x_prev)/h.</li>
  * </ol>
  * External forces are gathered once per step and act on all of its substeps. The constraint order is
@@ -28,22 +30,26 @@ public final class Simulation {
     private final List<Constraint> body = new ArrayList<>();
     private final List<AttachmentConstraint> attachments = new ArrayList<>();
     private final List<Sphere> spheres = new ArrayList<>();
-    private final List<SphereCollisionConstraint> contacts = new ArrayList<>();
+    private final ContactSet contacts = new ContactSet();
     private final List<Kinematics> kinematics = new ArrayList<>();
     private final List<ExternalForce> forces = new ArrayList<>();
     private final SolverContext ctx = new SolverContext();
     private final StepSnapshot snapshot;
-    /** The solve order, rebuilt only when the set of constraints changes. */
+    /** The solve order (cloth constraints, then attachments), rebuilt only when either set changes. */
     private Constraint[] order = new Constraint[0];
-    /** The coloured order, built on first use after a change of the constraint set. */
+    /** The cloth constraints' coloured order, built on first use after they change (not when grabbing). */
+    private Colouring bodyColouring;
     private Colouring colouring;
     private ParallelSweeps parallel;
-    /** The global solver for the body constraints, built on first use after a change of them. */
+    /** The global solver for the cloth constraints, built on first use after they change (not when grabbing). */
     private GlobalSolver global;
-    private Constraint[] afterGlobal;
+    /** The solve stage, chosen when the constraint set or the solver settings change. */
+    private SolveStage solve;
+    private final SolveChoice solvedFor = new SolveChoice();
     private double time;
     private long stepCount;
-    private SweepListener sweepListener;
+    private SweepListener sweepListener = NO_LISTENER;
+    private static final SweepListener NO_LISTENER = (sim, substep, sweep) -> { };
 
     public Simulation(Particles particles, SolverSettings settings) {
         if (particles == null) throw new IllegalArgumentException("particles must not be null, was null");
@@ -67,23 +73,22 @@ public final class Simulation {
         if (c == null) throw new IllegalArgumentException("constraint must not be null, was null");
         for (int i : c.particles()) Check.index("constraint particle", i, particles.count());
         body.add(c);
-        rebuildOrder();
+        bodyChanged();
         return this;
     }
 
     public Simulation addAll(List<? extends Constraint> cs) {
         for (Constraint c : cs) for (int i : c.particles()) Check.index("constraint particle", i, particles.count());
         body.addAll(cs);
-        rebuildOrder();
+        bodyChanged();
         return this;
     }
 
-    /** Adds a sphere and a contact with every particle (brute force, O(particles × spheres)). */
+    /** Adds a sphere; its contacts are found each substep (brute force, O(particles × spheres)). */
     public Simulation add(Sphere s) {
         if (s == null) throw new IllegalArgumentException("sphere must not be null, was null");
         spheres.add(s);
-        for (int i = 0; i < particles.count(); i++) contacts.add(new SphereCollisionConstraint(i, s));
-        rebuildOrder();
+        contacts.reserve(particles.count(), spheres.size());
         return this;
     }
 
@@ -109,12 +114,12 @@ public final class Simulation {
         Check.index("particle", i, particles.count());
         AttachmentConstraint a = new AttachmentConstraint(i, x, y, z);
         attachments.add(a);
-        rebuildOrder();
+        attachmentsChanged();
         return a;
     }
 
     public void release(AttachmentConstraint a) {
-        if (attachments.remove(a)) rebuildOrder();
+        if (attachments.remove(a)) attachmentsChanged();
     }
 
     /** Sets PBD stiffness k for every constraint of a family. */
@@ -129,30 +134,36 @@ public final class Simulation {
         for (Constraint c : body) if (c.family() == family) c.setCompliance(alpha);
     }
 
-    private void rebuildOrder() {
-        Constraint[] next = new Constraint[body.size() + attachments.size() + contacts.size()];
+    private void bodyChanged() {
+        bodyColouring = null;
+        global = null;
+        attachmentsChanged();
+    }
+
+    /** Grabbing and releasing land here: the order and stage are remade, the global solver is kept. */
+    private void attachmentsChanged() {
+        Constraint[] next = new Constraint[body.size() + attachments.size()];
         int n = 0;
         for (Constraint c : body) next[n++] = c;
         for (Constraint c : attachments) next[n++] = c;
-        for (Constraint c : contacts) next[n++] = c;
         order = next;
         colouring = null;
-        global = null;
+        solve = null;
     }
 
     private Colouring colouring() {
         if (colouring == null) {
-            List<Colouring> parts = new ArrayList<>();
-            parts.add(Colouring.of(body.toArray(new Constraint[0]), particles.count()));
-            parts.add(Colouring.of(attachments.toArray(new Constraint[0]), particles.count()));
-            parts.add(Colouring.of(contacts.toArray(new Constraint[0]), particles.count()));
-            colouring = Colouring.concat(parts);
+            if (bodyColouring == null) bodyColouring = Colouring.of(body.toArray(new Constraint[0]), particles.count());
+            colouring = Colouring.concat(List.of(bodyColouring, Colouring.of(attachments.toArray(new Constraint[0]), particles.count())));
         }
         return colouring;
     }
 
     /** Number of colours of the coloured order (built if needed): the barriers per sweep when parallel. */
     public int colourCount() { return colouring().colours(); }
+
+    /** The global solver in use (for tests: that grabbing keeps it), or null. */
+    GlobalSolver globalSolverInUse() { return global; }
 
     /** One step of the settings' timestep. */
     public void step() { step(settings.timestep()); }
@@ -165,74 +176,94 @@ public final class Simulation {
     public void step(double dt) {
         Check.positive("dt", dt);
         snapshot.save(particles, spheres, time, stepCount);
-        run(dt, null);
+        run(dt, StepObserver.NONE, solveStage());
         if (!Metrics.allFinite(particles)) throw diverged(dt);
     }
 
     /**
-     * The stages of one step (see {@link Stage}). With a probe (only when replaying a step that
-     * diverged) the state is checked after every stage and every projection; without one, the loop
-     * pays one null test per stage.
+     * The stages of one step (see {@link Stage}), each a call. The observer hears the end of every stage
+     * (a no-op but when replaying a step that diverged, whose solve stage then checks every projection).
      */
-    private void run(double dt, Probe probe) {
+    private void run(double dt, StepObserver observer, SolveStage solveStage) {
         final int substeps = settings.substeps(), iterations = settings.iterations();
         final double h = dt / substeps;
         for (int f = 0, nf = forces.size(); f < nf; f++) forces.get(f).apply(particles, time, dt);
-        if (probe != null) probe.check(Stage.FORCES);
+        observer.after(Stage.FORCES);
         ctx.load(settings, h);
-        final boolean coloured = settings.order() == ConstraintOrder.COLOURED;
-        final Colouring col = coloured ? colouring() : null;
-        final Constraint[] cs = coloured ? col.ordered : order;
-        final ParallelSweeps team = probe == null ? parallelFor(settings.threads()) : null;
         for (int s = 0; s < substeps; s++) {
-            predict(h);
-            if (probe != null) probe.check(Stage.PREDICT);
             final double t = time + h;
-            for (int k = 0, nk = kinematics.size(); k < nk; k++) kinematics.get(k).apply(particles, t);
-            for (int k = 0, nk = spheres.size(); k < nk; k++) spheres.get(k).advance(t, h);
-            if (probe != null) probe.check(Stage.KINEMATICS);
-            for (Constraint c : cs) c.beginSubstep(ctx);
-            if (sweepListener != null) sweepListener.afterSweep(this, s, -1);
-            if (settings.solver() != SolverType.GAUSS_SEIDEL) {
-                GlobalSolver g = globalSolver();
-                for (int it = 0; it < iterations; it++) {
-                    g.iterate(particles, ctx);
-                    if (probe != null) probe.checkBody(g);
-                    project(afterGlobal, probe);
-                    if (sweepListener != null) sweepListener.afterSweep(this, s, it);
-                }
-            } else if (team != null && sweepListener == null) {
-                team.sweep(col, particles, ctx, iterations);
-            } else {
-                for (int it = 0; it < iterations; it++) {
-                    project(cs, probe);
-                    if (sweepListener != null) sweepListener.afterSweep(this, s, it);
-                }
-            }
+            predict(h);
+            observer.after(Stage.PREDICT);
+            moveKinematics(t, h);
+            observer.after(Stage.KINEMATICS);
+            contacts.collide(particles, spheres);
+            observer.after(Stage.COLLIDE);
+            for (Constraint c : order) c.beginSubstep(ctx);
+            sweepListener.afterSweep(this, s, -1);
+            solveStage.solve(s, iterations);
+            observer.after(Stage.SOLVE);
             updateVelocities(h);
-            if (probe != null) probe.check(Stage.UPDATE_VELOCITIES);
+            observer.after(Stage.UPDATE_VELOCITIES);
             time = t;
         }
         java.util.Arrays.fill(particles.force, 0);
         stepCount++;
     }
 
-    /** One Gauss–Seidel sweep over {@code cs}; with a probe, each projection is checked. */
-    private void project(Constraint[] cs, Probe probe) {
-        if (probe == null) { for (Constraint c : cs) c.project(particles, ctx); return; }
-        for (Constraint c : cs) {
-            c.project(particles, ctx);
-            probe.check(c);
+    private void moveKinematics(double t, double h) {
+        for (int k = 0, nk = kinematics.size(); k < nk; k++) kinematics.get(k).apply(particles, t);
+        for (int k = 0, nk = spheres.size(); k < nk; k++) spheres.get(k).advance(t, h);
+    }
+
+    /**
+     * The solve stage for the current settings: chosen here, once per change of the constraint set or
+     * of the solver type, order, thread count, PCG settings or listener, never inside the substep loop.
+     */
+    private SolveStage solveStage() {
+        SolverType type = settings.solver();
+        boolean coloured = settings.order() == ConstraintOrder.COLOURED;
+        int threads = settings.threads();
+        GlobalSolver g = type == SolverType.GAUSS_SEIDEL ? null : globalSolver(); // remade if the PCG settings changed
+        if (solve != null && solvedFor.matches(type, coloured, threads, sweepListener, g)) return solve;
+        if (type != SolverType.GAUSS_SEIDEL) {
+            solve = new GlobalIterations(g, attachments.toArray(new Constraint[0]), particles, ctx, contacts, this, sweepListener);
+        } else if (!coloured) {
+            solve = new SequentialSweeps(order, particles, ctx, contacts, this, sweepListener);
+        } else {
+            Colouring col = colouring();
+            SequentialSweeps sequential = new SequentialSweeps(col.ordered, particles, ctx, contacts, this, sweepListener);
+            // The team runs a substep's sweeps in one go, so a listener to single sweeps gets the sequential one.
+            ParallelSweeps team = sweepListener == NO_LISTENER ? parallelFor(threads) : null;
+            solve = team == null ? sequential : new ParallelColouredSweeps(col, team, particles, ctx, contacts, sequential);
+        }
+        solvedFor.set(type, coloured, threads, sweepListener, g);
+        return solve;
+    }
+
+    /** What the solve stage was chosen for (compared each step without allocating). */
+    private static final class SolveChoice {
+        SolverType type;
+        boolean coloured;
+        int threads;
+        SweepListener listener;
+        GlobalSolver global;
+
+        boolean matches(SolverType t, boolean c, int n, SweepListener l, GlobalSolver g) {
+            return t == type && c == coloured && n == threads && l == listener && g == global;
+        }
+
+        void set(SolverType t, boolean c, int n, SweepListener l, GlobalSolver g) {
+            type = t; coloured = c; threads = n; listener = l; global = g;
         }
     }
 
     /** Restores the state before the step, replays it with a probe to find the culprit, restores again. */
     private SimulationDivergedException diverged(double dt) {
         restoreSnapshot();
-        Probe probe = new Probe();
+        StepProbe probe = new StepProbe(particles);
         try {
-            run(dt, probe);
-        } catch (Probe.Found found) {
+            run(dt, probe, solveStage().probed(probe));
+        } catch (StepProbe.Found found) {
             // the probe has recorded where
         }
         restoreSnapshot();
@@ -246,54 +277,15 @@ public final class Simulation {
         stepCount = snapshot.stepCount;
     }
 
-    /** Finds the first stage and constraint family of a replayed step that leave a non-finite number. */
-    private final class Probe {
-        final class Found extends RuntimeException {
-            Found() { super(null, null, false, false); }
-        }
-
-        Stage stage;
-        ConstraintFamily family;
-
-        void check(Stage st) {
-            boolean finite = Metrics.allFinite(particles);
-            if (st == Stage.FORCES) for (double f : particles.force) finite &= Double.isFinite(f);
-            if (!finite) found(st, null);
-        }
-
-        void check(Constraint c) {
-            for (int i : c.particles())
-                for (int k = 3 * i; k < 3 * i + 3; k++)
-                    if (!Double.isFinite(particles.x[k])) found(Stage.SOLVE, c.family());
-        }
-
-        /** After a global iteration: the first body constraint on a non-finite particle names the family. */
-        void checkBody(GlobalSolver g) {
-            for (Constraint c : g.constraints()) check(c);
-        }
-
-        private void found(Stage st, ConstraintFamily f) {
-            stage = st;
-            family = f;
-            throw new Found();
-        }
-    }
-
     private GlobalSolver globalSolver() {
         boolean mg = settings.solver() == SolverType.MULTIGRID_PCG;
-        if (global == null || global.multigrid() != mg || global.tolerance() != settings.pcgTolerance() || global.maxIterations() != settings.pcgMaxIterations()) {
+        if (global == null || global.multigrid() != mg || global.tolerance() != settings.pcgTolerance() || global.maxIterations() != settings.pcgMaxIterations())
             global = new GlobalSolver(body.toArray(new Constraint[0]), particles.count(), mg, settings.pcgTolerance(), settings.pcgMaxIterations());
-            Constraint[] rest = new Constraint[attachments.size() + contacts.size()];
-            int n = 0;
-            for (Constraint c : attachments) rest[n++] = c;
-            for (Constraint c : contacts) rest[n++] = c;
-            afterGlobal = rest;
-        }
         return global;
     }
 
     /** Conjugate-gradient iterations of the last global iteration (0 with Gauss–Seidel). */
-    public int lastPcgIterations() { return global == null ? 0 : global.lastIterations(); }
+    public int lastPcgIterations() { return global == null || settings.solver() == SolverType.GAUSS_SEIDEL ? 0 : global.lastIterations(); }
 
     /** Global iterations whose step was not taken (see {@link GlobalSolver#iterate}), 0 with Gauss–Seidel. */
     public int rejectedGlobalSteps() { return global == null ? 0 : global.rejectedSteps(); }
@@ -342,7 +334,10 @@ public final class Simulation {
     }
 
     /** Observes the solver after every sweep (convergence experiments); null for none. */
-    public void setSweepListener(SweepListener listener) { sweepListener = listener; }
+    public void setSweepListener(SweepListener listener) { sweepListener = listener == null ? NO_LISTENER : listener; }
+
+    /** Contacts found in the last substep (candidates within reach of a sphere, touching or not). */
+    public int contactCount() { return contacts.count(); }
 
     /** The substep h of the step in progress (or of the last step), seconds. */
     public double substep() { return ctx.h; }

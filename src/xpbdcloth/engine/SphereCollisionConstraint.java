@@ -18,6 +18,10 @@ package xpbdcloth.engine;
  * Macklin et al. 2014, "Unified Particle Physics for Real-Time Applications", eq. (24)–(25).
  * Degenerate case: a particle exactly at the centre has no normal; it is pushed out along +y (up), a fixed
  * choice so the result is deterministic.
+ *
+ * <p>A simulation does not keep one of these per particle and sphere: its contacts are found anew each
+ * substep ({@link ContactSet}) and projected by the same {@link #project(Particles, int, Sphere, double)}.
+ * This class remains for looking at one contact (its C, its gradient) and for tests.
  */
 public final class SphereCollisionConstraint extends Constraint {
     final int i;
@@ -47,18 +51,27 @@ public final class SphereCollisionConstraint extends Constraint {
     }
 
     @Override protected void project(Particles p, SolverContext ctx) {
+        lambda += project(p, i, sphere, ctx.h);
+    }
+
+    /**
+     * The contact's projection, written once: used by this class and by the transient contacts of
+     * {@link ContactSet}. Moves particle i out of the sphere and applies friction; returns the Δλ of the
+     * normal correction (0 when not in contact).
+     */
+    static double project(Particles p, int i, Sphere s, double h) {
         final double[] x = p.x;
         final int k = 3 * i;
-        final Sphere s = sphere;
         double dx = x[k] - s.cx, dy = x[k + 1] - s.cy, dz = x[k + 2] - s.cz;
         double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
         double C = len - (s.radius + s.margin);
         double w = p.w[i];
-        if (C >= 0 || w == 0) return;
+        if (C >= 0 || w == 0) return 0;
         double nx, ny, nz;
         if (len < DistanceConstraint.MIN_LENGTH) { nx = 0; ny = 1; nz = 0; }
         else { nx = dx / len; ny = dy / len; nz = dz / len; }
-        double normalCorrection = w * hardDeltaLambda(C, w); // = −C > 0
+        double dLambda = hardDeltaLambda(C, w);
+        double normalCorrection = w * dLambda; // = −C > 0
         x[k] += normalCorrection * nx; x[k + 1] += normalCorrection * ny; x[k + 2] += normalCorrection * nz;
 
         // Surface velocity at the contact point r n: v_sphere + ω × (r n).
@@ -66,15 +79,15 @@ public final class SphereCollisionConstraint extends Constraint {
         double vsx = s.vx + s.omegaY * rz - s.omegaZ * ry;
         double vsy = s.vy + s.omegaZ * rx - s.omegaX * rz;
         double vsz = s.vz + s.omegaX * ry - s.omegaY * rx;
-        double h = ctx.h;
         double rdx = x[k] - p.prev[k] - h * vsx, rdy = x[k + 1] - p.prev[k + 1] - h * vsy, rdz = x[k + 2] - p.prev[k + 2] - h * vsz;
         double along = rdx * nx + rdy * ny + rdz * nz;
         double tx = rdx - along * nx, ty = rdy - along * ny, tz = rdz - along * nz;
         double slip = Math.sqrt(tx * tx + ty * ty + tz * tz);
-        if (slip == 0) return;
+        if (slip == 0) return dLambda;
         double removed = slip < s.staticFriction * normalCorrection
                 ? 1.0
                 : Math.min(s.kineticFriction * normalCorrection / slip, 1.0);
         x[k] -= removed * tx; x[k + 1] -= removed * ty; x[k + 2] -= removed * tz;
+        return dLambda;
     }
 }

@@ -11,6 +11,8 @@ public enum Stage {
     PREDICT,
     /** Scripted pins and kinematic colliders move to their place at the end of the substep. */
     KINEMATICS,
+    /** This substep's contacts are found: particles within reach of a collider. */
+    COLLIDE,
     /** The constraints are projected (λ reset first): n sweeps or n global iterations, then contacts. */
     SOLVE,
     /** v = (x − x_prev) / h. */

@@ -1,0 +1,21 @@
+package xpbdcloth.engine;
+
+/**
+ * The solve stage of one substep: n sweeps (or n global iterations) over the cloth's constraints and
+ * the attachments, each followed by a pass over the substep's contacts, so hard contacts have the last
+ * word. Three implementations: {@link SequentialSweeps} (Gauss–Seidel in a fixed order, insertion or
+ * coloured), {@link ParallelColouredSweeps} (the coloured order on several threads, the same result) and
+ * {@link GlobalIterations} (a global Newton–PCG step per iteration, then attachments and contacts by
+ * Gauss–Seidel). {@link Simulation} chooses one when the constraint set or the solver settings change,
+ * never by branches inside the substep loop.
+ */
+interface SolveStage {
+    /** The substep's solve; the listener hears every sweep. */
+    void solve(int substep, int iterations);
+
+    /**
+     * The same computation, checking the state after every projection: used only to replay a step that
+     * produced a non-finite number, to find the first constraint family that did.
+     */
+    SolveStage probed(StepProbe probe);
+}

@@ -1,0 +1,84 @@
+package xpbdcloth.engine;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+import org.junit.jupiter.api.Test;
+
+/** The solve stage and the collide stage: what is kept between steps, and what is found anew. */
+class SolveStageTest {
+
+    static Simulation cloth(SolverType type) {
+        return new ClothBuilder().resolution(16, 16).size(0.6, 0.6).arealDensity(0.2).pinTopCorners()
+                .family(ConstraintFamily.STRUCTURAL, 1, 1e-6).build()
+                .simulation(new SolverSettings().solver(type).iterations(2).substeps(2));
+    }
+
+    /**
+     * Grabbing a particle (attach, drag, release) changes the attachments, not the cloth: the global
+     * solver and its multigrid hierarchy, built from the cloth's constraints, are kept, where they used
+     * to be thrown away and rebuilt on every grab.
+     */
+    @Test
+    void grabbingKeepsTheGlobalSolverAndItsMultigrid() {
+        Simulation sim = cloth(SolverType.MULTIGRID_PCG);
+        sim.step();
+        GlobalSolver built = sim.globalSolverInUse();
+        long setupNanos = sim.multigridSetup()[1];
+        assertNotNull(built);
+        for (int grab = 0; grab < 3; grab++) {
+            AttachmentConstraint a = sim.attach(200, 0.1, 1.2, 0.2);
+            sim.step();
+            sim.release(a);
+            sim.step();
+        }
+        assertSame(built, sim.globalSolverInUse(), "the same solver after three grabs");
+        assertEquals(setupNanos, sim.multigridSetup()[1], "no new multigrid setup");
+        assertTrue(Metrics.allFinite(sim.particles()));
+    }
+
+    /** Back on Gauss–Seidel, no CG count lingers (the HUD showed the last global solve's). */
+    @Test
+    void gaussSeidelReportsNoConjugateGradientIterations() {
+        Simulation sim = cloth(SolverType.JACOBI_PCG);
+        sim.step();
+        assertTrue(sim.lastPcgIterations() > 0);
+        sim.settings().solver(SolverType.GAUSS_SEIDEL);
+        sim.step();
+        assertEquals(0, sim.lastPcgIterations());
+    }
+
+    /** Adding a cloth constraint does change the system: then the solver is rebuilt. */
+    @Test
+    void changingTheClothRebuildsTheGlobalSolver() {
+        Simulation sim = cloth(SolverType.JACOBI_PCG);
+        sim.step();
+        GlobalSolver built = sim.globalSolverInUse();
+        sim.add(DistanceConstraint.between(sim.particles(), 0, 17));
+        sim.step();
+        assertNotSame(built, sim.globalSolverInUse());
+    }
+
+    /**
+     * Contacts are transient: a sphere under a 16×16 cloth finds only the particles within its reach
+     * (none before the cloth arrives, a cap once it hangs over the sphere), not 256 permanent contacts.
+     * Reach grows with a particle's own motion, so while the unbent cloth whips around the sphere almost
+     * every particle is a candidate for a moment (250 of 256 at 0.7 s); once it hangs, only the cap.
+     */
+    @Test
+    void contactsAreFoundEachSubstep() {
+        Simulation sim = new ClothBuilder().resolution(16, 16).size(0.8, 0.8).plane(ClothBuilder.Plane.HORIZONTAL)
+                .origin(0, 1.0, 0).arealDensity(0.2).family(ConstraintFamily.STRUCTURAL, 1, 1e-6).build()
+                .simulation(new SolverSettings().iterations(2).substeps(4));
+        sim.add(new Sphere(SpherePath.fixed(0, 0.5, 0), 0.1, 0.01, 0.5, 0.4));
+        sim.step();
+        assertEquals(0, sim.contactCount(), "the cloth starts 0.4 m above the sphere's top");
+        for (int s = 0; s < 300; s++) sim.step();
+        int hanging = sim.contactCount();
+        System.out.println("contacts of the hanging cloth: " + hanging + " of 256 particles");
+        assertTrue(hanging > 0 && hanging < 256 / 2, "a cap of the cloth, not all of it: " + hanging);
+        for (int i = 0; i < sim.particles().count(); i++) {
+            double dx = sim.particles().x(i), dy = sim.particles().y(i) - 0.5, dz = sim.particles().z(i);
+            assertTrue(Math.sqrt(dx * dx + dy * dy + dz * dz) > 0.11 - 1e-9, "particle " + i + " outside the sphere and its margin");
+        }
+    }
+}
