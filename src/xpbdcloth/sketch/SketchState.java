@@ -46,12 +46,11 @@ public final class SketchState {
     private Scene main, left, right;
     private boolean sideBySide;
 
-    // Solver parameters shared by every running scene.
-    private ConstraintMode mode;
-    private int iterations, substeps;
-    private double dt;
-    private boolean muller;
-    private SolverType solverType;
+    /**
+     * The solver parameters every running scene shares: one engine settings object, validated by its own
+     * setters, copied into each scene (the side-by-side pair overrides only the mode).
+     */
+    private final SolverSettings shared = new SolverSettings();
     private final Map<ConstraintFamily, double[]> materials = new EnumMap<>(ConstraintFamily.class);
     private int familyChoice;
 
@@ -74,12 +73,8 @@ public final class SketchState {
     private void use(Preset p) {
         Scene fresh = Scene.of(p); // builds or throws before anything here changes
         preset = p;
-        mode = p.solver.mode;
-        iterations = p.solver.iterations;
-        substeps = p.solver.substeps;
-        dt = p.solver.dt;
-        muller = p.solver.mullerCorrection;
-        solverType = p.solver.type;
+        shared.solver(SolverType.GAUSS_SEIDEL).mode(p.solver.mode).solver(p.solver.type).iterations(p.solver.iterations)
+                .substeps(p.solver.substeps).timestep(p.solver.dt).mullerCorrection(p.solver.mullerCorrection);
         materials.clear();
         p.families.forEach((f, m) -> materials.put(f, new double[] {m.stiffness, m.compliance}));
         windOn = p.wind != null;
@@ -102,10 +97,11 @@ public final class SketchState {
     private void applyAll() {
         for (Scene s : running()) {
             SolverSettings st = s.simulation().settings();
-            ConstraintMode m = s == left ? ConstraintMode.PBD : s == right ? ConstraintMode.XPBD : mode;
+            ConstraintMode m = s == left ? ConstraintMode.PBD : s == right ? ConstraintMode.XPBD : shared.mode();
             // Gauss–Seidel first, so that no intermediate state pairs PBD with a global solver.
-            st.iterations(iterations).substeps(substeps).timestep(dt).mullerCorrection(muller).threads(threads)
-                    .solver(SolverType.GAUSS_SEIDEL).mode(m).solver(m == ConstraintMode.PBD ? SolverType.GAUSS_SEIDEL : solverType);
+            st.iterations(shared.iterations()).substeps(shared.substeps()).timestep(shared.timestep())
+                    .mullerCorrection(shared.mullerCorrection()).threads(threads)
+                    .solver(SolverType.GAUSS_SEIDEL).mode(m).solver(m == ConstraintMode.PBD ? SolverType.GAUSS_SEIDEL : shared.solver());
             materials.forEach((f, km) -> {
                 s.simulation().setStiffness(f, km[0]);
                 s.simulation().setCompliance(f, km[1]);
@@ -125,12 +121,12 @@ public final class SketchState {
 
     public boolean sideBySide() { return sideBySide; }
     public Preset preset() { return preset; }
-    public ConstraintMode mode() { return mode; }
-    public int iterations() { return iterations; }
-    public int substeps() { return substeps; }
-    public double dt() { return dt; }
-    public boolean mullerCorrection() { return muller; }
-    public SolverType solverType() { return solverType; }
+    public ConstraintMode mode() { return shared.mode(); }
+    public int iterations() { return shared.iterations(); }
+    public int substeps() { return shared.substeps(); }
+    public double dt() { return shared.timestep(); }
+    public boolean mullerCorrection() { return shared.mullerCorrection(); }
+    public SolverType solverType() { return shared.solver(); }
     public boolean windOn() { return windOn; }
     public double windSpeed() { return windSpeed; }
     public double windAngle() { return windAngle; }
@@ -156,49 +152,49 @@ public final class SketchState {
 
     public void toggleMode() {
         if (sideBySide) { say("side by side shows both: PBD left, XPBD right"); return; }
-        if (mode == ConstraintMode.XPBD && solverType != SolverType.GAUSS_SEIDEL) {
+        if (shared.mode() == ConstraintMode.XPBD && shared.solver() != SolverType.GAUSS_SEIDEL) {
             error("PBD runs on Gauss-Seidel only (its k is defined per projection): press v for gauss-seidel first");
             return;
         }
-        mode = mode == ConstraintMode.PBD ? ConstraintMode.XPBD : ConstraintMode.PBD;
+        shared.mode(shared.mode() == ConstraintMode.PBD ? ConstraintMode.XPBD : ConstraintMode.PBD);
         applyAll();
-        say("mode " + mode);
+        say("mode " + shared.mode());
     }
 
     public void toggleMuller() {
-        muller = !muller;
+        shared.mullerCorrection(!shared.mullerCorrection());
         applyAll();
-        say(muller ? "PBD: Müller's k' = 1-(1-k)^(1/n)" : "PBD: raw k every sweep");
+        say(shared.mullerCorrection() ? "PBD: Müller's k' = 1-(1-k)^(1/n)" : "PBD: raw k every sweep");
     }
 
     /** Gauss–Seidel → Jacobi-PCG → multigrid-PCG → Gauss–Seidel, for the running scenes. */
     public void cycleSolver() {
-        if (sideBySide || mode == ConstraintMode.PBD) {
+        if (sideBySide || shared.mode() == ConstraintMode.PBD) {
             error((sideBySide ? "side by side runs PBD on the left" : "PBD mode") + ", which needs Gauss-Seidel: the solver is unchanged (press m for XPBD)");
             return;
         }
         SolverType[] all = SolverType.values();
-        solverType = all[(solverType.ordinal() + 1) % all.length];
+        shared.solver(all[(shared.solver().ordinal() + 1) % all.length]);
         applyAll();
-        say("solver " + solverType.label() + (solverType == SolverType.GAUSS_SEIDEL ? "" : ": each iteration is one global Newton step; contacts stay Gauss-Seidel"));
+        say("solver " + shared.solver().label() + (shared.solver() == SolverType.GAUSS_SEIDEL ? "" : ": each iteration is one global Newton step; contacts stay Gauss-Seidel"));
     }
 
     public void changeIterations(int delta) {
-        iterations = (int) Limits.ITERATIONS.clamp(iterations + delta);
+        shared.iterations((int) Limits.ITERATIONS.clamp(shared.iterations() + delta));
         applyAll();
     }
 
     public void changeSubsteps(int delta) {
-        substeps = (int) Limits.SUBSTEPS.clamp(substeps + delta);
+        shared.substeps((int) Limits.SUBSTEPS.clamp(shared.substeps() + delta));
         applyAll();
     }
 
     public void cycleTimestep() {
         int next = 0;
-        for (int i = 0; i < TIMESTEPS.length; i++) if (Math.abs(TIMESTEPS[i] - dt) < 1e-12) next = (i + 1) % TIMESTEPS.length;
-        dt = TIMESTEPS[next];
+        for (int i = 0; i < TIMESTEPS.length; i++) if (Math.abs(TIMESTEPS[i] - shared.timestep()) < 1e-12) next = (i + 1) % TIMESTEPS.length;
+        shared.timestep(TIMESTEPS[next]);
         applyAll();
-        say(String.format("dt = 1/%.0f s", 1 / dt));
+        say(String.format("dt = 1/%.0f s", 1 / shared.timestep()));
     }
 
     public void cycleFamily() {
