@@ -53,6 +53,18 @@ class LayeringTest {
         assertEquals(List.of(), violations(Path.of("src/xpbdcloth/scene"), above));
     }
 
+    /** The repository cites papers and public sources, never a folder outside itself. */
+    @Test
+    void nothingPointsOutsideTheRepository() throws IOException {
+        List<String> out = new ArrayList<>();
+        for (String root : new String[] {"README.md", "src", "test", "data", "build.gradle", "scripts", "xpbd_cloth"})
+            try (Stream<Path> files = Files.walk(Path.of(root))) {
+                for (Path f : (Iterable<Path>) files.filter(Files::isRegularFile)::iterator)
+                    if (!f.toString().endsWith("LayeringTest.java") && Files.readString(f, java.nio.charset.StandardCharsets.ISO_8859_1).contains("../" + "shared")) out.add(f.toString());
+            }
+        assertEquals(List.of(), out);
+    }
+
     /** The scanner itself finds an import it should (so the two tests above cannot pass vacuously). */
     @Test
     void theScannerSeesImports() throws IOException {
