@@ -61,6 +61,13 @@ public final class PresetLoader {
         }
     }
 
+    /** Jackson's message without its advice to switch on parser features, which a preset author cannot. */
+    static String inOurWords(String jackson) {
+        if (jackson.contains("ALLOW_NON_NUMERIC_NUMBERS"))
+            return "NaN and Infinity are not numbers in JSON (and no field takes them): give a finite number";
+        return jackson.replaceAll(":? *(?:enable|use) `?JsonReadFeature\\.[A-Z_]+`?[^\\n]*", "");
+    }
+
     /** Where a preset's mesh file is found: by its name relative to the preset. */
     interface MeshFiles {
         ClothMesh load(String relativeName, double weld);
@@ -84,10 +91,32 @@ public final class PresetLoader {
         }
     }
 
-    /** A built-in name or a path to a file. */
+    /** A built-in name or a path to a file; a near miss of a built-in name is told which one it missed. */
     public static Preset byNameOrPath(String nameOrPath) {
         if (BUILT_IN.contains(nameOrPath)) return builtIn(nameOrPath);
-        return load(Path.of(nameOrPath));
+        Path path = Path.of(nameOrPath);
+        if (!Files.exists(path) && !nameOrPath.contains("/") && !nameOrPath.endsWith(".json"))
+            throw new PresetException(nameOrPath, "(file)", "is neither a built-in scene nor a file; did you mean \"" + nearest(nameOrPath)
+                    + "\"? Built-in: " + String.join(", ", BUILT_IN));
+        return load(path);
+    }
+
+    /** The built-in name with the fewest single-character edits from {@code s}. */
+    static String nearest(String s) {
+        String best = BUILT_IN.get(0);
+        int bestDistance = Integer.MAX_VALUE;
+        for (String name : BUILT_IN) {
+            int[] prev = new int[name.length() + 1], cur = new int[name.length() + 1];
+            for (int j = 0; j <= name.length(); j++) prev[j] = j;
+            for (int i = 1; i <= s.length(); i++) {
+                cur[0] = i;
+                for (int j = 1; j <= name.length(); j++)
+                    cur[j] = Math.min(Math.min(cur[j - 1], prev[j]) + 1, prev[j - 1] + (s.charAt(i - 1) == name.charAt(j - 1) ? 0 : 1));
+                int[] t = prev; prev = cur; cur = t;
+            }
+            if (prev[name.length()] < bestDistance) { bestDistance = prev[name.length()]; best = name; }
+        }
+        return best;
     }
 
     /** Parses preset text; {@code file} names it in errors; a mesh file is looked up beside it. */
@@ -103,7 +132,7 @@ public final class PresetLoader {
             root = JSON.readTree(text);
         } catch (JsonProcessingException e) {
             String where = e.getLocation() == null ? "" : " at line " + e.getLocation().getLineNr() + " column " + e.getLocation().getColumnNr();
-            throw new PresetException(file, "(syntax)", "not valid JSON" + where + ": " + e.getOriginalMessage());
+            throw new PresetException(file, "(syntax)", "not valid JSON" + where + ": " + inOurWords(e.getOriginalMessage()));
         }
         return new Reader(file, meshes).preset(new Node(root, ""));
     }

@@ -186,6 +186,10 @@ public final class ClothApp {
             frame();
             hud.clear();
         }
+        if (state.quitRequested) {
+            app.exit();
+            return;
+        }
         if (state.exportRequested) {
             state.exportRequested = false;
             exportMeshes();
@@ -224,7 +228,7 @@ public final class ClothApp {
         }
         long h0 = threadBean.getCurrentThreadAllocatedBytes();
         OrbitCamera.beginHud(g);
-        hud.draw(g, state, simMs, renderMs, allocatedPerFrame, app.frameRate, pacer.slowMotion());
+        hud.draw(g, state, simMs, renderMs, allocatedPerFrame, app.frameRate, pacer.slowMotion(), recording != null);
         OrbitCamera.endHud(g);
         hudAllocated = 0.9 * hudAllocated + 0.1 * (threadBean.getCurrentThreadAllocatedBytes() - h0);
         renderMs = 0.9 * renderMs + 0.1 * ((System.nanoTime() - t1) / 1e6);

@@ -46,9 +46,13 @@ final class Hud {
     private SketchState formattedFor;
     static final int FORMAT_EVERY = 10;
 
-    void draw(PGraphics g, SketchState s, double simMs, double renderMs, double bytesPerFrame, double fps, boolean slowMotion) {
+    /**
+     * Draws the panels. While recording, the wall-clock timings are left out (they differ from run to
+     * run), so recorded frames are byte-identical between runs.
+     */
+    void draw(PGraphics g, SketchState s, double simMs, double renderMs, double bytesPerFrame, double fps, boolean slowMotion, boolean recording) {
         if (++framesSinceFormat >= FORMAT_EVERY || formattedFor != s || s.message() != lastMessage) {
-            lines = format(s, simMs, renderMs, bytesPerFrame, fps, slowMotion);
+            lines = format(s, simMs, renderMs, bytesPerFrame, fps, slowMotion, recording);
             linesWidth = -1;
             framesSinceFormat = 0;
             formattedFor = s;
@@ -61,7 +65,7 @@ final class Hud {
     /** Widths of the text panels in pixels, measured when their text changes (-1: not yet). */
     private float linesWidth = -1, helpWidth = -1;
 
-    private String[] format(SketchState s, double simMs, double renderMs, double bytesPerFrame, double fps, boolean slowMotion) {
+    private String[] format(SketchState s, double simMs, double renderMs, double bytesPerFrame, double fps, boolean slowMotion, boolean recording) {
         List<Scene> running = s.running();
         Simulation sim = running.get(0).simulation();
         ConstraintFamily fam = s.shownFamily();
@@ -78,13 +82,15 @@ final class Hud {
                 fmt("family %s", famName),
                 fmt("  PBD  k %.2f  ->  k' %.4f %s", km[0], kPrime, s.mullerCorrection() ? "(Müller, n=" + s.iterations() + ")" : "(raw k)"),
                 fmt("  XPBD alpha %.2e m/N  ->  1/alpha %s", km[1], km[1] == 0 ? "infinite (hard)" : fmt("%.2e N/m", 1 / km[1])),
-                fmt("sim %.2f ms/step   render %.2f ms   %.0f fps   %.1f kB allocated/frame%s", simMs, renderMs, fps, bytesPerFrame / 1024,
+                recording ? "recording: 60 frames per simulated second (wall-clock timings not drawn)"
+                        : fmt("sim %.2f ms/step   render %.2f ms   %.0f fps   %.1f kB allocated/frame%s", simMs, renderMs, fps, bytesPerFrame / 1024,
                         slowMotion ? "   SLOW MOTION" : ""),
                 fmt("particles %d   constraints %d", sim.particles().count() * running.size(), constraints),
-                fmt("strain mean %.2f %%  max %.2f %%   KE %.2e J   max link force %.3f N",
-                        100 * Metrics.meanStrain(sim, ConstraintFamily.STRUCTURAL), 100 * Metrics.maxStrain(sim, ConstraintFamily.STRUCTURAL),
-                        Metrics.kineticEnergy(sim.particles()), maxForce(sim)),
+                (s.sideBySide() ? "strain: under each cloth" : fmt("strain mean %.2f %%  max %.2f %%",
+                        100 * Metrics.meanStrain(sim, ConstraintFamily.STRUCTURAL), 100 * Metrics.maxStrain(sim, ConstraintFamily.STRUCTURAL)))
+                        + fmt("   KE %.2e J   max link force %.3f N%s", Metrics.kineticEnergy(sim.particles()), maxForce(sim), s.sideBySide() ? " (PBD)" : ""),
                 s.windOn() ? fmt("wind %.1f m/s towards %.0f°", s.windSpeed(), Math.toDegrees(s.windAngle())) : "wind off",
+                s.showHelp ? "h: hide the keys" : "h: keys   q: quit",
         };
         return lines;
     }
@@ -121,7 +127,8 @@ final class Hud {
             for (int i = 0; i < 2; i++) {
                 Simulation si = running.get(i).simulation();
                 String label = (i == 0 ? "PBD  k " + fmt("%.2f", km[0]) : "XPBD  alpha " + fmt("%.1e", km[1]))
-                        + fmt("   max strain %.2f %%", 100 * Metrics.maxStrain(si, ConstraintFamily.STRUCTURAL));
+                        + fmt("   strain mean %.2f %%  max %.2f %%", 100 * Metrics.meanStrain(si, ConstraintFamily.STRUCTURAL),
+                                100 * Metrics.maxStrain(si, ConstraintFamily.STRUCTURAL));
                 float cx = g.width * (i == 0 ? 0.3f : 0.7f);
                 g.fill(0, 150);
                 g.rect(cx - g.textWidth(label) / 2 - 10, g.height - 40, g.textWidth(label) + 20, 26, 6);

@@ -59,7 +59,7 @@ public final class SketchState {
     private double windAngle, windSpeed;
 
     // View toggles.
-    boolean paused, wireframe, showParticles, showSpheres = true, showGrid = true, showHelp = true, loadRequested, exportRequested;
+    boolean paused, wireframe, showParticles, showSpheres = true, showGrid = true, showHelp, loadRequested, exportRequested, quitRequested;
     int pendingSteps;
 
     private String message = "";

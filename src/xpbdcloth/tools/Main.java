@@ -53,9 +53,28 @@ public final class Main implements Callable<Integer> {
             line.getErr().println("xpbd-cloth: " + e.getMessage());
             return 2;
         });
-        int code = cli.execute(args);
+        int code = optionsBeforeCommand(cli, args) ? 2 : cli.execute(args);
         // An open sketch keeps running on Processing's threads and exits when its window closes.
         if (!Launcher.opened()) System.exit(code);
+    }
+
+    /**
+     * Options written before a command (`xpbd-cloth --scene rope record`) belong to the window, not to
+     * the command, which would silently run with its own defaults: refuse them and say where they go.
+     */
+    static boolean optionsBeforeCommand(CommandLine cli, String[] args) {
+        CommandLine.ParseResult parsed;
+        try {
+            parsed = cli.parseArgs(args);
+        } catch (CommandLine.ParameterException e) {
+            return false; // execute reports it, with usage
+        }
+        if (!parsed.hasSubcommand() || parsed.matchedOptions().isEmpty()) return false;
+        String command = parsed.subcommand().commandSpec().name();
+        cli.getErr().println("xpbd-cloth: " + parsed.matchedOptions().get(0).longestName() + " is written before '" + command
+                + "', where it would be ignored; put the options after the command: xpbd-cloth " + command + " "
+                + String.join(" ", parsed.originalArgs().subList(0, parsed.originalArgs().indexOf(command))) + " ...");
+        return true;
     }
 
     @Override public Integer call() {
@@ -111,10 +130,13 @@ public final class Main implements Callable<Integer> {
         @Override public Integer call() throws java.io.IOException {
             if (frames < 1) throw new IllegalArgumentException("frames must be >= 1, was " + frames);
             if (obj != null) return recordObj();
-            if (!displayAvailable("xpbd-cloth record --scene " + sketch.scene + " --frames " + frames)) return 2;
-            PresetLoader.byNameOrPath(sketch.scene); // a broken preset fails before anything is written
+            PresetLoader.byNameOrPath(sketch.scene); // a broken preset or size fails before anything is said or written
+            parseSize(sketch.size);
+            if (!displayAvailable("xpbd-cloth record --scene " + sketch.scene + " --frames " + frames + (out != null ? " --out " + out : ""))) return 2;
             String name = new File(sketch.scene).getName().replace(".json", "");
-            File folder = out != null ? out : new File("build/frames/" + name + (sketch.sideBySide ? "-side-by-side" : ""));
+            // Absolute against where the user stands: Processing resolves a relative path against the sketch's folder.
+            File folder = (out != null ? out : new File("build/frames/" + name + (sketch.sideBySide ? "-side-by-side" : ""))).getAbsoluteFile();
+            if (gif != null) gif = gif.getAbsoluteFile();
             System.out.println("recording " + frames + " frames of " + sketch.scene + " into " + folder);
             sketch.open(new ClothApp.Recording(folder, frames, gif));
             return 0;

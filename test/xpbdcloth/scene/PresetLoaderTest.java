@@ -27,6 +27,22 @@ class PresetLoaderTest {
         assertEquals(-9.81, p.solver.gravity[1], "default gravity");
     }
 
+    /** A near miss of a built-in name says which one, and lists them. */
+    @Test
+    void aMistypedSceneNameSuggestsTheNearest() {
+        PresetException e = assertThrows(PresetException.class, () -> PresetLoader.byNameOrPath("hangin"));
+        assertTrue(e.problem().startsWith("is neither a built-in scene nor a file; did you mean \"hanging\"? Built-in: hanging, corners"), e.getMessage());
+        assertEquals("spinning-sphere", PresetLoader.nearest("spining-sphere"));
+    }
+
+    /** NaN is refused in the project's words, not with the JSON parser's advice to enable a feature. */
+    @Test
+    void notANumberIsSaidPlainly() {
+        PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse("nan.json", valid().replace("\"dt\": 0.02", "\"dt\": NaN")));
+        assertTrue(e.problem().contains("NaN and Infinity are not numbers in JSON"), e.getMessage());
+        assertFalse(e.getMessage().contains("ALLOW_NON_NUMERIC_NUMBERS"), e.getMessage());
+    }
+
     /** An edge name pins every particle along that edge. */
     @Test
     void edgeNamesPinWholeEdges() {
@@ -88,7 +104,9 @@ class PresetLoaderTest {
         e = assertThrows(PresetException.class, () -> PresetLoader.load(dir.resolve("nope.json")));
         assertEquals("does not exist", e.problem());
         e = assertThrows(PresetException.class, () -> PresetLoader.byNameOrPath("no-such-scene"));
-        assertEquals("does not exist", e.problem());
+        assertTrue(e.problem().startsWith("is neither a built-in scene nor a file"), e.getMessage());
+        e = assertThrows(PresetException.class, () -> PresetLoader.byNameOrPath(dir.resolve("nope.json").toString()));
+        assertEquals("does not exist", e.problem(), "a path is a path");
     }
 
     @Test

@@ -40,7 +40,7 @@ class RecordingSmokeTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain"})
+    @ValueSource(strings = {"hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth"})
     void sceneRendersAndMoves(String scene, @org.junit.jupiter.api.io.TempDir Path out) throws Exception {
         String log = record(out, scene);
         File first = out.resolve("frame-0001.png").toFile(), last = out.resolve(String.format("frame-%04d.png", FRAMES)).toFile();
@@ -51,6 +51,18 @@ class RecordingSmokeTest {
         System.out.printf("%s: cloth covers %.1f %% of the last frame, %.2f %% of pixels changed%n", scene, 100 * cloth, 100 * changed(a, b));
         assertTrue(cloth > 0.002 && cloth < 0.8, scene + ": cloth colour share " + cloth);
         assertTrue(changed(a, b) > 0.002, scene + ": the picture changes between first and last frame");
+    }
+
+    /** Two recordings of a scene are the same bytes, frame by frame (no wall-clock timing is drawn). */
+    @org.junit.jupiter.api.Test
+    void recordingsAreByteIdentical(@org.junit.jupiter.api.io.TempDir Path out) throws Exception {
+        Path a = Files.createDirectory(out.resolve("a")), b = Files.createDirectory(out.resolve("b"));
+        record(a, "sphere-pass");
+        record(b, "sphere-pass");
+        for (int f = 1; f <= FRAMES; f++) {
+            String name = String.format("frame-%04d.png", f);
+            assertArrayEquals(Files.readAllBytes(a.resolve(name)), Files.readAllBytes(b.resolve(name)), name);
+        }
     }
 
     /** --gif: every second frame at half size, 30 ms apart, looping; the animation moves. */
