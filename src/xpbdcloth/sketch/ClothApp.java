@@ -196,7 +196,11 @@ public final class ClothApp {
         }
         if (state.loadRequested) {
             state.loadRequested = false;
-            app.selectInput("Load a scene preset (JSON)", "presetSelected", null, this);
+            // One chooser at a time, and the sketch ignores keys while it is open (they are meant for it).
+            if (!choosing) {
+                choosing = true;
+                app.selectInput("Load a scene preset (JSON)", "presetSelected", null, this);
+            }
         }
 
         PGraphics g = app.g;
@@ -267,11 +271,15 @@ public final class ClothApp {
 
     /** File chooser callback ('l'); a broken file keeps the current scene and shows why. */
     public void presetSelected(File file) {
+        choosing = false;
         if (file != null) state.load(Path.of(file.getPath()));
     }
 
+    /** True while the preset file chooser is open. */
+    private volatile boolean choosing;
+
     public void keyEvent(KeyEvent e) {
-        if (e.getAction() != KeyEvent.PRESS || e.getKey() == PConstants.CODED) return;
+        if (choosing || e.getAction() != KeyEvent.PRESS || e.getKey() == PConstants.CODED) return;
         KeyBinding b = KeyBindings.forKey(e.getKey());
         if (b != null) b.press(state);
         if (e.getKey() == PConstants.ESC) app.key = 0; // keep Esc from closing the sketch by accident
