@@ -15,12 +15,13 @@ import xpbdcloth.mesh.RoundTablecloth;
  * simulation must meet whatever the mesh, with no fitted number.
  *
  * <p>Measured: a global solver (Jacobi-PCG, which re-linearises every constraint at the current positions)
- * meets the balance to 0.1 % of a vertex's weight. Gauss–Seidel settles 2.6 % off, whatever its
+ * meets the balance to 0.14 % of a vertex's weight. Gauss–Seidel settles 1.6 % off, whatever its
  * iteration count (20 or 100 sweeps give the same): XPBD's update assumes the constraint gradients do not
  * turn during a step (Macklin et al. 2016, §4: the g(x) = 0 simplification), and every step turns them by
  * the ~h²g the solve must undo. The error shrinks with h², so substeps, not sweeps, reduce it: with one
- * substep of 1/60 s the same cloth was off by 270× a vertex's weight at rest (tensions here are ~40× a
- * vertex's weight, so a turn of a few hundredths of a radian unbalances them).
+ * substep of 1/60 s the same cloth was off by 69× a vertex's weight at rest (the edge tensions of a
+ * taut membrane are many times a vertex's weight, so a turn of a few hundredths of a radian unbalances
+ * them).
  */
 class TableclothHookeTest {
     static final double G = 9.81, ALPHA = 1e-3;
