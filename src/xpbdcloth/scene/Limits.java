@@ -73,6 +73,11 @@ public final class Limits {
     public static final Range WIND_SPEED = new Range(-100, 100, "m/s");
     public static final Range DRAG = new Range(0, 10, "kg/(m²·s)");
     public static final Range GUST = new Range(0, 1, "");
+    /** Spheres in a preset: each is tested against every particle every substep. */
+    public static final int MAX_SPHERES = 16;
+    /** Entries in cloth.pins (an edge name counts once, whatever its length). */
+    public static final int MAX_PIN_ENTRIES = 4096;
+    public static final int MAX_PIN_MOTIONS = 256;
     /** Vertices of a mesh cloth after welding: as many as the largest grid. */
     public static final Range MESH_VERTICES = new Range(2, 512 * 512, "vertices");
     /** A mesh file's uniform scale (its units to metres). */

@@ -17,6 +17,8 @@ import xpbdcloth.mesh.ClothMesh;
 public final class Preset {
     public final String name;
     public final String description;
+    /** The file it was read from (or the built-in's name), for messages. */
+    public final String source;
     public final Cloth cloth;
     /** k and α per family; a family absent here is not built. */
     public final Map<ConstraintFamily, Material> families;
@@ -26,8 +28,9 @@ public final class Preset {
     /** Null when the preset has no wind. */
     public final WindSpec wind;
 
-    Preset(String name, String description, Cloth cloth, Map<ConstraintFamily, Material> families, Solver solver,
+    Preset(String source, String name, String description, Cloth cloth, Map<ConstraintFamily, Material> families, Solver solver,
            List<SphereSpec> spheres, List<PinMotion> pinMotions, WindSpec wind) {
+        this.source = source;
         this.name = name;
         this.description = description;
         this.cloth = cloth;

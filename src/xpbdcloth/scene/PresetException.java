@@ -9,10 +9,21 @@ public final class PresetException extends IllegalArgumentException {
     private final String file, field, problem;
 
     public PresetException(String file, String field, String problem) {
-        super(file + ": " + field + ": " + problem);
+        super(printable(file) + ": " + printable(field) + ": " + printable(problem));
         this.file = file;
-        this.field = field;
-        this.problem = problem;
+        this.field = printable(field);
+        this.problem = printable(problem);
+    }
+
+    /** Control characters from a hostile file (a field name with an escape sequence) reach no terminal raw. */
+    static String printable(String s) {
+        StringBuilder b = new StringBuilder(s.length());
+        for (int i = 0; i < s.length(); i++) {
+            char c = s.charAt(i);
+            if (c < 0x20 || c == 0x7f || (c >= 0x80 && c < 0xa0)) b.append(String.format("\\u%04x", (int) c));
+            else b.append(c);
+        }
+        return b.toString();
     }
 
     public String file() { return file; }

@@ -78,16 +78,39 @@ public final class PresetLoader {
         return (name, weld) -> ObjReader.read(folder.resolve(name), weld);
     }
 
-    /** A preset file on disk. */
+    /** The largest preset file read, bytes: the biggest sensible preset is a few kB. */
+    public static final long MAX_FILE_BYTES = 1 << 20;
+
+    /**
+     * A preset file on disk: a regular file (not a directory, device or pipe, which could be endless or
+     * block), at most {@link #MAX_FILE_BYTES}, in UTF-8.
+     */
     public static Preset load(Path path) {
         String file = path.toString();
         if (Files.isDirectory(path)) throw new PresetException(file, "(file)", "is a directory, not a preset file");
         if (!Files.exists(path)) throw new PresetException(file, "(file)", "does not exist");
+        if (!Files.isRegularFile(path)) throw new PresetException(file, "(file)", "is not a regular file (a device or a pipe?), not a preset file");
         try {
+            long size = Files.size(path);
+            if (size > MAX_FILE_BYTES)
+                throw new PresetException(file, "(file)", "is " + size + " bytes; a preset is at most " + MAX_FILE_BYTES + " bytes (this is not a preset, or it lists far too much)");
             Path folder = path.toAbsolutePath().getParent();
-            return parse(file, Files.readString(path, StandardCharsets.UTF_8), besides(folder));
+            return parse(file, utf8(file, Files.readAllBytes(path)), besides(folder));
         } catch (IOException e) {
             throw new PresetException(file, "(file)", "cannot be read: " + e.getMessage());
+        }
+    }
+
+    /** The bytes as UTF-8 text, or an error saying where they stop being UTF-8. */
+    static String utf8(String file, byte[] bytes) {
+        java.nio.charset.CharsetDecoder d = StandardCharsets.UTF_8.newDecoder()
+                .onMalformedInput(java.nio.charset.CodingErrorAction.REPORT).onUnmappableCharacter(java.nio.charset.CodingErrorAction.REPORT);
+        java.nio.ByteBuffer in = java.nio.ByteBuffer.wrap(bytes);
+        try {
+            return d.decode(in).toString();
+        } catch (java.nio.charset.CharacterCodingException e) {
+            boolean utf16 = bytes.length >= 2 && ((bytes[0] & 0xff) == 0xfe && (bytes[1] & 0xff) == 0xff || (bytes[0] & 0xff) == 0xff && (bytes[1] & 0xff) == 0xfe);
+            throw new PresetException(file, "(file)", "is not UTF-8 text" + (utf16 ? " (it looks like UTF-16: save it as UTF-8)" : " (invalid byte near offset " + in.position() + ")"));
         }
     }
 
@@ -129,7 +152,7 @@ public final class PresetLoader {
         if (text.isBlank()) throw new PresetException(file, "(file)", "is empty");
         JsonNode root;
         try {
-            root = JSON.readTree(text);
+            root = JSON.readerFor(JsonNode.class).with(com.fasterxml.jackson.databind.DeserializationFeature.FAIL_ON_TRAILING_TOKENS).readValue(text);
         } catch (JsonProcessingException e) {
             String where = e.getLocation() == null ? "" : " at line " + e.getLocation().getLineNr() + " column " + e.getLocation().getColumnNr();
             throw new PresetException(file, "(syntax)", "not valid JSON" + where + ": " + inOurWords(e.getOriginalMessage()));
@@ -173,12 +196,12 @@ public final class PresetLoader {
             Preset.Solver solver = solver(required(root, "solver"));
             List<Preset.SphereSpec> spheres = new ArrayList<>();
             Node ss = optional(root, "spheres");
-            if (ss != null) for (Node s : array(ss)) spheres.add(sphere(s));
+            if (ss != null) for (Node s : array(ss, Limits.MAX_SPHERES)) spheres.add(sphere(s));
             List<Preset.PinMotion> motions = new ArrayList<>();
             Node ms = optional(root, "pinMotions");
-            if (ms != null) for (Node m : array(ms)) motions.add(pinMotion(m, cloth));
+            if (ms != null) for (Node m : array(ms, Limits.MAX_PIN_MOTIONS)) motions.add(pinMotion(m, cloth));
             Node w = optional(root, "wind");
-            return new Preset(name, description, cloth, families, solver, spheres, motions, w == null ? null : wind(w));
+            return new Preset(file, name, description, cloth, families, solver, spheres, motions, w == null ? null : wind(w));
         }
 
         Preset.Cloth cloth(Node n) {
@@ -200,7 +223,12 @@ public final class PresetLoader {
             double totalMass = tm == null ? Double.NaN : number(tm, Limits.TOTAL_MASS);
             List<int[]> pins = new ArrayList<>();
             Node ps = optional(n, "pins");
-            if (ps != null) for (Node p : array(ps)) pins.addAll(pinned(p, columns, rows));
+            if (ps != null) {
+                // Each particle once, however many entries name it: an edge listed 200 000 times is one edge.
+                java.util.LinkedHashSet<Integer> seen = new java.util.LinkedHashSet<>();
+                for (Node p : array(ps, Limits.MAX_PIN_ENTRIES))
+                    for (int[] rc : pinned(p, columns, rows)) if (seen.add(rc[0] * columns + rc[1])) pins.add(rc);
+            }
             return new Preset.Cloth(columns, rows, width, height, plane, origin, arealDensity, totalMass, pins);
         }
 
@@ -237,7 +265,7 @@ public final class PresetLoader {
             if (ad != null && mesh.area() == 0) throw fail(ad.path, "needs a mesh with faces of non-zero area (" + name + " has none); use totalMass");
             TreeSet<Integer> pinned = new TreeSet<>();
             Node ps = optional(n, "pins");
-            if (ps != null) for (Node p : array(ps)) for (int v : meshPins(p, mesh)) pinned.add(v);
+            if (ps != null) for (Node p : array(ps, Limits.MAX_PIN_ENTRIES)) for (int v : meshPins(p, mesh)) pinned.add(v);
             return new Preset.Cloth(mesh, name, arealDensity, totalMass, pinned.stream().mapToInt(Integer::intValue).toArray());
         }
 
@@ -430,6 +458,13 @@ public final class PresetLoader {
             return j == null || j.isNull() ? null : new Node(j, n.child(name));
         }
 
+        /** An array of at most {@code max} entries. */
+        List<Node> array(Node n, int max) {
+            List<Node> out = array(n);
+            if (out.size() > max) throw fail(n.path, "has " + out.size() + " entries; at most " + max + " are allowed");
+            return out;
+        }
+
         List<Node> array(Node n) {
             if (!n.json.isArray()) throw fail(n.path, "must be an array, was " + describe(n.json));
             List<Node> out = new ArrayList<>();
@@ -469,7 +504,9 @@ public final class PresetLoader {
         }
 
         int integer(Node n) {
-            if (!n.json.isIntegralNumber() || !n.json.canConvertToInt()) throw fail(n.path, "must be a whole number, was " + describe(n.json));
+            if (n.json.isIntegralNumber() && !n.json.canConvertToInt())
+                throw fail(n.path, "is too large: must be a whole number within ±" + Integer.MAX_VALUE + ", was " + n.json.asText());
+            if (!n.json.isIntegralNumber()) throw fail(n.path, "must be a whole number, was " + describe(n.json));
             return n.json.asInt();
         }
 

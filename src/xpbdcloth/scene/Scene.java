@@ -89,7 +89,14 @@ public final class Scene {
     /** Builds a fresh scene from a preset (the preset is already validated). */
     public static Scene of(Preset preset) {
         if (preset == null) throw new IllegalArgumentException("preset must not be null, was null");
-        return new Scene(preset);
+        try {
+            return new Scene(preset);
+        } catch (PresetException e) {
+            throw e;
+        } catch (IllegalArgumentException e) {
+            // What only the engine can check (a mesh it cannot build, say) still names the file.
+            throw new PresetException(preset.source, "(building the scene)", e.getMessage());
+        }
     }
 
     /** A built-in scene by name. */

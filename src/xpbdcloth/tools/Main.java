@@ -12,7 +12,7 @@ import xpbdcloth.sketch.Launcher;
 /** The command line: opens the sketch, records frames, runs the benchmark. */
 @Command(name = "xpbd-cloth", mixinStandardHelpOptions = true, version = "xpbd-cloth 0.1.0",
         description = "Real-time PBD/XPBD cloth. With no command, opens the sketch.",
-        subcommands = {Main.Record.class, Main.BenchCommand.class, xpbdcloth.experiments.Experiments.class})
+        subcommands = {Main.Record.class, Main.CheckCommand.class, Main.BenchCommand.class, xpbdcloth.experiments.Experiments.class})
 public final class Main implements Callable<Integer> {
     /** What both the window and the recorder take: the scene, the layout, the size, the solver threads. */
     static final class SketchOptions {
@@ -151,6 +151,32 @@ public final class Main implements Callable<Integer> {
             System.out.printf(java.util.Locale.ROOT, "wrote %d OBJ frames of %s (%d vertices each, 60 frames per second of simulated time) into %s in %.1f s%n",
                     n, sketch.scene, xpbdcloth.scene.Scene.of(preset).cloth().particles().count(), obj, (System.nanoTime() - t0) / 1e9);
             return 0;
+        }
+    }
+
+    @Command(name = "check", mixinStandardHelpOptions = true,
+            description = "Loads presets and builds their scenes without a window, and reports each one's problems (exit code 2 if any).")
+    static final class CheckCommand implements Callable<Integer> {
+        @CommandLine.Parameters(arity = "1..*", paramLabel = "PRESET", description = "built-in scene names or preset files")
+        java.util.List<String> presets;
+
+        @CommandLine.Spec
+        CommandLine.Model.CommandSpec spec;
+
+        @Override public Integer call() {
+            int bad = 0;
+            for (String p : presets) {
+                try {
+                    xpbdcloth.scene.Scene scene = xpbdcloth.scene.Scene.of(PresetLoader.byNameOrPath(p));
+                    spec.commandLine().getOut().printf("%s: ok (%d particles, %d constraints)%n", p,
+                            scene.cloth().particles().count(), scene.simulation().constraints().length);
+                } catch (IllegalArgumentException e) {
+                    spec.commandLine().getOut().println(e.getMessage());
+                    bad++;
+                }
+            }
+            spec.commandLine().getOut().flush();
+            return bad == 0 ? 0 : 2;
         }
     }
 

@@ -43,13 +43,44 @@ class PresetLoaderTest {
         assertFalse(e.getMessage().contains("ALLOW_NON_NUMERIC_NUMBERS"), e.getMessage());
     }
 
+    /** What is not a preset file is refused before it is read: devices, pipes, huge files, other encodings. */
+    @Test
+    void notAPresetFile(@TempDir Path dir) throws IOException {
+        PresetException e = assertThrows(PresetException.class, () -> PresetLoader.load(Path.of("/dev/zero")));
+        assertTrue(e.problem().startsWith("is not a regular file"), e.getMessage());
+        Path big = dir.resolve("big.json");
+        Files.write(big, new byte[(int) PresetLoader.MAX_FILE_BYTES + 1]);
+        e = assertThrows(PresetException.class, () -> PresetLoader.load(big));
+        assertTrue(e.problem().contains("a preset is at most 1048576 bytes"), e.getMessage());
+        Path utf16 = Files.write(dir.resolve("utf16.json"), valid().getBytes(java.nio.charset.StandardCharsets.UTF_16));
+        e = assertThrows(PresetException.class, () -> PresetLoader.load(utf16));
+        assertEquals("is not UTF-8 text (it looks like UTF-16: save it as UTF-8)", e.problem());
+    }
+
+    /** Trailing content, huge integers, control characters, endless lists: each named, none silently accepted. */
+    @Test
+    void hostileTextIsNamed() {
+        PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse("t.json", valid() + " xyz"));
+        assertEquals("(syntax)", e.field(), e.getMessage());
+        e = assertThrows(PresetException.class, () -> PresetLoader.parse("t.json", valid().replace("\"columns\": 4", "\"columns\": 12345678901234567890123")));
+        assertTrue(e.problem().startsWith("is too large: must be a whole number within"), e.getMessage());
+        e = assertThrows(PresetException.class, () -> PresetLoader.parse("t.json", valid().replace("\"name\": \"t\"", "\"name\": \"t\", \"\\u001b[2Jx\": 1")));
+        assertFalse(e.getMessage().contains("\u001b"), "no raw escape character: " + e.getMessage());
+        assertTrue(e.getMessage().contains("\\u001b[2Jx"), e.getMessage());
+        StringBuilder many = new StringBuilder();
+        for (int i = 0; i < 5000; i++) many.append(i == 0 ? "" : ", ").append("\"top-edge\"");
+        e = assertThrows(PresetException.class, () -> PresetLoader.parse("t.json", valid().replace("[\"top-left\"]", "[" + many + "]")));
+        assertEquals("cloth.pins", e.field());
+        assertTrue(e.problem().startsWith("has 5000 entries; at most 4096"), e.getMessage());
+    }
+
     /** An edge name pins every particle along that edge. */
     @Test
     void edgeNamesPinWholeEdges() {
         Preset p = PresetLoader.parse("t.json", valid().replace("[\"top-left\"]", "[\"top-edge\", \"left-edge\"]"));
-        assertEquals(8, p.cloth.pins.size(), "4 along the top, 4 down the left (the shared corner twice)");
+        assertEquals(7, p.cloth.pins.size(), "4 along the top, 3 more down the left (the shared corner once)");
         for (int c = 0; c < 4; c++) assertArrayEquals(new int[] {0, c}, p.cloth.pins.get(c));
-        for (int r = 0; r < 4; r++) assertArrayEquals(new int[] {r, 0}, p.cloth.pins.get(4 + r));
+        for (int r = 1; r < 4; r++) assertArrayEquals(new int[] {r, 0}, p.cloth.pins.get(3 + r));
     }
 
     /** A pin motion moves one particle, so an edge name is refused there with its reason. */

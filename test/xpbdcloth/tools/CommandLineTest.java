@@ -26,6 +26,21 @@ class CommandLineTest {
         assertNotNull(refusal("--size", "0x0", "record"));
     }
 
+    /** `check` validates presets headless: ok lines, the problem for a broken one, exit code 2. */
+    @Test
+    void checkReportsEachPreset(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir) throws Exception {
+        java.nio.file.Path bad = java.nio.file.Files.writeString(dir.resolve("bad.json"), "{ \"name\": \"x\" } trailing");
+        CommandLine cli = new CommandLine(new Main());
+        StringWriter out = new StringWriter();
+        cli.setOut(new PrintWriter(out, true));
+        assertEquals(0, cli.execute("check", "hanging", "flag"));
+        assertTrue(out.toString().contains("hanging: ok (1024 particles"), out.toString());
+        assertTrue(out.toString().contains("flag: ok (622 particles"), out.toString());
+        out.getBuffer().setLength(0);
+        assertEquals(2, cli.execute("check", "hanging", bad.toString()));
+        assertTrue(out.toString().contains(bad + ": (syntax): not valid JSON"), out.toString());
+    }
+
     @Test
     void optionsInTheirPlaceAreFine() {
         assertNull(refusal("record", "--scene", "rope", "--frames", "2"));
