@@ -73,6 +73,15 @@ final class ClothRenderer {
         g.vertex((float) x[k], (float) x[k + 1], (float) x[k + 2]);
     }
 
+    private final float[] rgb = new float[3];
+
+    /** White at rest, red stretched, blue compressed, full colour at ±{@link #FULL_COLOUR_STRAIN}; into rgb. */
+    static void strainColour(double strain, float[] rgb) {
+        double s = Math.max(-1, Math.min(1, strain / FULL_COLOUR_STRAIN));
+        if (s >= 0) { rgb[0] = 255; rgb[1] = (float) (255 * (1 - s)); rgb[2] = rgb[1]; }
+        else { rgb[0] = (float) (255 * (1 + s)); rgb[1] = rgb[0]; rgb[2] = 255; }
+    }
+
     /** Distance constraints as lines: white at rest, red stretched, blue compressed. */
     void drawWireframe(PGraphics g, Scene scene) {
         Particles p = scene.cloth().particles();
@@ -82,9 +91,8 @@ final class ClothRenderer {
         for (Constraint c : scene.simulation().constraints()) {
             if (!(c instanceof DistanceConstraint)) continue;
             DistanceConstraint d = (DistanceConstraint) c;
-            double s = Math.max(-1, Math.min(1, d.strain(p) / FULL_COLOUR_STRAIN));
-            if (s >= 0) g.stroke(255, (float) (255 * (1 - s)), (float) (255 * (1 - s)));
-            else g.stroke((float) (255 * (1 + s)), (float) (255 * (1 + s)), 255);
+            strainColour(d.strain(p), rgb);
+            g.stroke(rgb[0], rgb[1], rgb[2]);
             int a = 3 * d.a(), b = 3 * d.b();
             g.vertex((float) x[a], (float) x[a + 1], (float) x[a + 2]);
             g.vertex((float) x[b], (float) x[b + 1], (float) x[b + 2]);

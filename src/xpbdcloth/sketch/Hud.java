@@ -53,7 +53,6 @@ final class Hud {
     void draw(PGraphics g, SketchState s, double simMs, double renderMs, double bytesPerFrame, double fps, boolean slowMotion, boolean recording) {
         if (++framesSinceFormat >= FORMAT_EVERY || formattedFor != s || s.message() != lastMessage) {
             lines = format(s, simMs, renderMs, bytesPerFrame, fps, slowMotion, recording);
-            linesWidth = -1;
             framesSinceFormat = 0;
             formattedFor = s;
             lastMessage = s.message();
@@ -62,8 +61,6 @@ final class Hud {
     }
 
     private String lastMessage;
-    /** Widths of the text panels in pixels, measured when their text changes (-1: not yet). */
-    private float linesWidth = -1, helpWidth = -1;
 
     private String[] format(SketchState s, double simMs, double renderMs, double bytesPerFrame, double fps, boolean slowMotion, boolean recording) {
         List<Scene> running = s.running();
@@ -77,11 +74,11 @@ final class Hud {
         String[] lines = {
                 s.preset().name + "  —  " + (s.sideBySide() ? "side by side: PBD | XPBD" : s.mode().toString()) + (s.paused ? "   [paused]" : ""),
                 fmt("iterations %d   substeps %d   dt 1/%.0f s (%.1f ms)", s.iterations(), s.substeps(), 1 / s.dt(), 1000 * s.dt()),
-                fmt("solver %s   residual |C + a~l| %.2e%s", s.solverType().name().toLowerCase(Locale.ROOT).replace('_', '-'), sim.residual(),
+                fmt("solver %s   residual ‖C + α̃λ‖ %.2e%s", s.solverType().name().toLowerCase(Locale.ROOT).replace('_', '-'), sim.residual(),
                         sim.lastPcgIterations() > 0 ? fmt("   CG iterations %d", sim.lastPcgIterations()) : ""),
                 fmt("family %s", famName),
-                fmt("  PBD  k %.2f  ->  k' %.4f %s", km[0], kPrime, s.mullerCorrection() ? "(Müller, n=" + s.iterations() + ")" : "(raw k)"),
-                fmt("  XPBD alpha %.2e m/N  ->  1/alpha %s", km[1], km[1] == 0 ? "infinite (hard)" : fmt("%.2e N/m", 1 / km[1])),
+                fmt("  PBD  k %.2f  →  k' %.4f %s", km[0], kPrime, s.mullerCorrection() ? "(Müller, n=" + s.iterations() + ")" : "(raw k)"),
+                fmt("  XPBD α %.2e m/N  →  1/α %s", km[1], km[1] == 0 ? "infinite (hard)" : fmt("%.2e N/m", 1 / km[1])),
                 recording ? "recording: 60 frames per simulated second (wall-clock timings not drawn)"
                         : fmt("sim %.2f ms/step   render %.2f ms   %.0f fps   %.1f kB allocated/frame%s", simMs, renderMs, fps, bytesPerFrame / 1024,
                         slowMotion ? "   SLOW MOTION" : ""),
@@ -95,48 +92,105 @@ final class Hud {
         return lines;
     }
 
+    private HudLayout layout;
+    private float charWidth = -1;
+    private String[] laidLines;
+    private String laidMessage;
+    private boolean laidHelp, laidLegend;
+    private int laidLabelChars;
+
+    /** The layout, recomputed only when what it depends on changes (it allocates). */
+    private HudLayout layout(PGraphics g, SketchState s, String[] labels) {
+        if (charWidth < 0) charWidth = g.textWidth("M");
+        int labelChars = labels == null ? -1 : labels[0].length() * 1000 + labels[1].length();
+        if (layout == null || layout.width != g.width || layout.height != g.height || laidLines != lines || laidMessage != s.message()
+                || laidHelp != s.showHelp || laidLegend != s.wireframe || laidLabelChars != labelChars) {
+            int longest = 0;
+            for (String line : lines) longest = Math.max(longest, line.length());
+            int helpLongest = 0;
+            for (KeyBinding k : KeyBindings.all()) helpLongest = Math.max(helpLongest, HELP_KEY_CHARS + k.help.length());
+            for (String m : MOUSE_HELP) helpLongest = Math.max(helpLongest, m.length());
+            layout = new HudLayout(g.width, g.height, charWidth, lines.length, longest, s.message().length(),
+                    labels == null ? null : new int[] {labels[0].length(), labels[1].length()}, s.wireframe,
+                    s.showHelp ? KeyBindings.all().size() + MOUSE_HELP.length + 3 : 0, helpLongest);
+            laidLines = lines;
+            laidMessage = s.message();
+            laidHelp = s.showHelp;
+            laidLegend = s.wireframe;
+            laidLabelChars = labelChars;
+        }
+        return layout;
+    }
+
     private void drawLines(PGraphics g, SketchState s) {
         List<Scene> running = s.running();
-        ConstraintFamily fam = s.shownFamily();
-        double[] km = s.material(fam);
+        String[] labels = s.sideBySide() ? labels(s, running) : null;
+        HudLayout l = layout(g, s, labels);
+        g.textAlign(PConstants.LEFT, PConstants.TOP);
+        if (l.help != null) { help(g, l); return; }
         g.noStroke();
         g.fill(0, 150);
-        if (linesWidth < 0) {
-            for (String line : lines) linesWidth = Math.max(linesWidth, g.textWidth(line));
-            linesWidth = 40 * (float) Math.ceil(linesWidth / 40); // steps, so the panel does not twitch with the numbers
-        }
-        g.rect(8, 8, linesWidth + 16, 18 * lines.length + 12, 6);
-        g.textAlign(PConstants.LEFT, PConstants.TOP);
+        g.rect(l.panel.x, l.panel.y, l.panel.w, l.panel.h, 6);
         g.fill(235);
-        for (int i = 0; i < lines.length; i++) g.text(lines[i], 16, 14 + 18 * i);
-        int y = 18 * lines.length + 28;
-        if (!s.message().isEmpty()) {
-            g.fill(0, 150);
-            g.rect(8, y - 4, Math.min(g.width - 16, g.textWidth(s.message()) + 16), 24, 6);
+        for (int i = 0; i < lines.length; i++) g.text(HudLayout.cut(lines[i], l.panelChars), l.panel.x + HudLayout.PAD, l.panel.y + 6 + HudLayout.LINE * i);
+        if (l.noticeY >= 0) {
             if (s.messageIsError()) g.fill(255, 110, 100);
             else g.fill(170, 230, 170);
-            g.text(s.message(), 16, y);
+            g.text(HudLayout.cut(s.message(), l.panelChars), l.panel.x + HudLayout.PAD, l.noticeY);
         }
 
-        int py = g.height - 2 * (PLOT_H + 26) - 6;
-        plot(g, 12, py, "max strain %", strain, running.size());
-        plot(g, 12, py + PLOT_H + 26, "kinetic energy J", kinetic, running.size());
+        plot(g, l.strainPlot.x + 4, l.strainPlot.y + 18, "max strain %", strain, running.size());
+        plot(g, l.energyPlot.x + 4, l.energyPlot.y + 18, "kinetic energy J", kinetic, running.size());
 
-        if (s.sideBySide()) {
-            g.textAlign(PConstants.CENTER, PConstants.TOP);
+        if (labels != null) {
+            g.noStroke();
             for (int i = 0; i < 2; i++) {
-                Simulation si = running.get(i).simulation();
-                String label = (i == 0 ? "PBD  k " + fmt("%.2f", km[0]) : "XPBD  alpha " + fmt("%.1e", km[1]))
-                        + fmt("   strain mean %.2f %%  max %.2f %%", 100 * Metrics.meanStrain(si, ConstraintFamily.STRUCTURAL),
-                                100 * Metrics.maxStrain(si, ConstraintFamily.STRUCTURAL));
-                float cx = g.width * (i == 0 ? 0.3f : 0.7f);
+                HudLayout.Rect r = l.labels[i];
                 g.fill(0, 150);
-                g.rect(cx - g.textWidth(label) / 2 - 10, g.height - 40, g.textWidth(label) + 20, 26, 6);
+                g.rect(r.x, r.y, r.w, r.h, 6);
                 g.fill(i == 0 ? 255 : 170, i == 0 ? 200 : 220, i == 0 ? 120 : 255);
-                g.text(label, cx, g.height - 36);
+                g.text(HudLayout.cut(labels[i], (int) ((r.w - 20) / charWidth)), r.x + 10, r.y + 4);
             }
         }
-        if (s.showHelp) help(g);
+        if (l.legend != null) legend(g, l.legend);
+    }
+
+    /** The side-by-side labels: each cloth's material and its strain. */
+    private static String[] labels(SketchState s, List<Scene> running) {
+        double[] km = s.material(s.shownFamily());
+        String[] out = new String[2];
+        for (int i = 0; i < 2; i++) {
+            Simulation si = running.get(i).simulation();
+            out[i] = (i == 0 ? "left: PBD  k " + fmt("%.2f", km[0]) : "right: XPBD  α " + fmt("%.1e", km[1]))
+                    + fmt("   strain mean %.2f %%  max %.2f %%", 100 * Metrics.meanStrain(si, ConstraintFamily.STRUCTURAL),
+                            100 * Metrics.maxStrain(si, ConstraintFamily.STRUCTURAL));
+        }
+        return out;
+    }
+
+    private final float[] rgb = new float[3];
+
+    /** The wireframe's colour scale: blue compressed, white at rest, red stretched, full at ±FULL_COLOUR_STRAIN. */
+    private void legend(PGraphics g, HudLayout.Rect r) {
+        g.noStroke();
+        g.fill(0, 150);
+        g.rect(r.x, r.y, r.w, r.h, 6);
+        float x0 = r.x + 10, w = r.w - 20, y = r.y + 6;
+        for (int k = 0; k < (int) w; k++) {
+            double strain = (2.0 * k / (w - 1) - 1) * ClothRenderer.FULL_COLOUR_STRAIN;
+            ClothRenderer.strainColour(strain, rgb);
+            g.fill(rgb[0], rgb[1], rgb[2]);
+            g.rect(x0 + k, y, 1, 12);
+        }
+        g.fill(230);
+        int pct = (int) Math.round(100 * ClothRenderer.FULL_COLOUR_STRAIN);
+        g.textAlign(PConstants.LEFT, PConstants.TOP);
+        g.text("-" + pct + " %", x0, y + 16);
+        g.textAlign(PConstants.CENTER, PConstants.TOP);
+        g.text("strain 0", x0 + w / 2, y + 16);
+        g.textAlign(PConstants.RIGHT, PConstants.TOP);
+        g.text("+" + pct + " %", x0 + w, y + 16);
+        g.textAlign(PConstants.LEFT, PConstants.TOP);
     }
 
     private void plot(PGraphics g, float x, float y, String title, History[] h, int series) {
@@ -160,34 +214,33 @@ final class Hud {
         }
     }
 
-    private void help(PGraphics g) {
+    static final int HELP_KEY_CHARS = 7;
+    static final String[] MOUSE_HELP = {"left-drag  rotate", "right-drag / wheel  zoom", "middle-drag (Meta+left)  pan",
+            "Shift+drag  lock axis", "double-click  reset view", "Ctrl+left-drag  grab the cloth"};
+
+    /** The keys and mouse controls, in as many columns as the window's height needs. */
+    private void help(PGraphics g, HudLayout l) {
         List<KeyBinding> keys = KeyBindings.all();
-        String[] mouse = {"left-drag  rotate", "right-drag / wheel  zoom", "middle-drag (Meta+left)  pan",
-                "Shift+drag  lock axis", "double-click  reset view", "Ctrl+left-drag  grab the cloth"};
-        if (helpWidth < 0) {
-            for (KeyBinding k : keys) helpWidth = Math.max(helpWidth, 50 + g.textWidth(k.help));
-            for (String m : mouse) helpWidth = Math.max(helpWidth, g.textWidth(m));
-        }
-        int lineH = 16, h = lineH * (keys.size() + mouse.length + 3) + 12;
-        float w = helpWidth + 20;
-        float x = g.width - w - 10, y = 10;
         g.noStroke();
-        g.fill(0, 160);
-        g.rect(x, y, w, h, 6);
-        g.textAlign(PConstants.LEFT, PConstants.TOP);
-        g.fill(255, 220, 140);
-        g.text("keys (h hides this)", x + 10, y + 6);
-        g.fill(230);
-        int row = 1;
+        g.fill(0, 185);
+        g.rect(l.help.x, l.help.y, l.help.w, l.help.h, 6);
+        float columnW = l.help.w / l.helpColumns;
+        int n = 0;
+        n = helpLine(g, l, columnW, n, "keys (h hides this)", true);
         for (KeyBinding k : keys) {
-            g.text((k.key == ' ' ? "space" : String.valueOf(k.key)), x + 10, y + 6 + lineH * row);
-            g.text(k.help, x + 60, y + 6 + lineH * row);
-            row++;
+            String key = k.key == ' ' ? "space" : String.valueOf(k.key);
+            n = helpLine(g, l, columnW, n, key + "       ".substring(key.length()) + k.help, false);
         }
-        row++;
-        g.fill(255, 220, 140);
-        g.text("mouse", x + 10, y + 6 + lineH * row++);
-        g.fill(230);
-        for (String m : mouse) g.text(m, x + 10, y + 6 + lineH * row++);
+        n = helpLine(g, l, columnW, n, "", false);
+        n = helpLine(g, l, columnW, n, "mouse", true);
+        for (String m : MOUSE_HELP) n = helpLine(g, l, columnW, n, m, false);
+    }
+
+    private int helpLine(PGraphics g, HudLayout l, float columnW, int n, String text, boolean heading) {
+        int column = n / l.helpRows, row = n % l.helpRows;
+        if (heading) g.fill(255, 220, 140);
+        else g.fill(230);
+        g.text(HudLayout.cut(text, l.helpColumnChars), l.help.x + column * columnW + HudLayout.PAD, l.help.y + 6 + HudLayout.HELP_LINE * row);
+        return n + 1;
     }
 }

@@ -82,6 +82,7 @@ public final class SketchState {
         windAngle = Math.atan2(u[2], u[0]);
         windSpeed = Math.hypot(u[0], u[2]);
         closeRunning();
+        tearingSaid = false;
         main = fresh;
         left = right = null;
         if (sideBySide) buildPair();
@@ -295,7 +296,32 @@ public final class SketchState {
             error("paused: " + e.getMessage());
             return false;
         }
+        warnIfTearing();
         return true;
+    }
+
+    /** Above this structural strain the cloth is no longer cloth: the solver cannot hold it at these settings. */
+    static final double TEARING_STRAIN = 1.0;
+    private int stepsSinceTearCheck;
+    private boolean tearingSaid;
+
+    /**
+     * Says once per scene when a cloth stretches past {@link #TEARING_STRAIN}: a big cloth with few sweeps
+     * (the largest grid the presets allow, 512², pulls apart at its pins at 2 × 10) needs more substeps or
+     * iterations, or a smaller resolution, and the user should be told which keys do that.
+     */
+    private void warnIfTearing() {
+        if (tearingSaid || ++stepsSinceTearCheck < 30) return;
+        stepsSinceTearCheck = 0;
+        for (Scene s : running()) {
+            double strain = xpbdcloth.engine.Metrics.maxStrain(s.simulation(), ConstraintFamily.STRUCTURAL);
+            if (strain > TEARING_STRAIN) {
+                tearingSaid = true;
+                error(String.format(java.util.Locale.ROOT, "the cloth stretches %.0f %%: %d sweeps x %d substeps cannot hold %d particles; press u or i for more, or load a smaller cloth",
+                        100 * strain, shared.iterations(), shared.substeps(), s.cloth().particles().count()));
+                return;
+            }
+        }
     }
 
     /** Seconds of simulated time of the first running scene. */

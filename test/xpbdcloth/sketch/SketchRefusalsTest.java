@@ -12,6 +12,22 @@ import xpbdcloth.scene.PresetLoader;
 /** The sketch says no where the engine does, and a step that diverges pauses the scene instead of losing it. */
 class SketchRefusalsTest {
 
+    /** A cloth the solver cannot hold (128² hard, one sweep, one substep) is said to be tearing, once, with the keys. */
+    @Test
+    void aTearingClothIsNamed() {
+        String text = "{ \"name\": \"big\", \"cloth\": { \"columns\": 128, \"rows\": 128, \"width\": 1, \"height\": 1, \"arealDensity\": 0.2,"
+                + " \"pins\": [\"top-left\", \"top-right\"] }, \"families\": { \"structural\": { \"stiffness\": 1, \"compliance\": 1e-8 } },"
+                + " \"solver\": { \"mode\": \"XPBD\", \"iterations\": 1, \"dt\": 0.02 } }";
+        SketchState s = new SketchState(PresetLoader.parse("big.json", text));
+        for (int i = 0; i < 90; i++) s.advance();
+        assertTrue(s.messageIsError(), s.message());
+        assertTrue(s.message().startsWith("the cloth stretches"), s.message());
+        assertTrue(s.message().contains("press u or i for more, or load a smaller cloth"), s.message());
+        SketchState fine = new SketchState(PresetLoader.builtIn("hanging"));
+        for (int i = 0; i < 90; i++) fine.advance();
+        assertFalse(fine.message().startsWith("the cloth stretches"), "the shipped hanging cloth holds: " + fine.message());
+    }
+
     @Test
     void vInPbdModeSaysSoAndKeepsGaussSeidel() {
         SketchState s = new SketchState(PresetLoader.builtIn("hanging"));

@@ -1,0 +1,110 @@
+package xpbdcloth.sketch;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Where the HUD's panels go in a window of a given size, computed without drawing so a test can check
+ * that nothing overlaps and nothing leaves the window, at any size down to 800 × 600. Text is measured
+ * in characters of a monospaced font of width {@code charWidth} pixels; a line longer than its panel is
+ * cut (the panel never grows past the window).
+ *
+ * <p>The rules: the parameter panel top left, the notice as its last line, the two plots bottom left; in side by
+ * side the two cloths' labels along the bottom right of the plots, in one row if they fit and else
+ * stacked; the strain legend (wireframe) top right if it clears the panel, else under the notice. The
+ * help is modal: while it is open it is the only panel, in as many columns as the height needs, each
+ * cut to the width.
+ */
+final class HudLayout {
+    static final int MARGIN = 8, LINE = 18, HELP_LINE = 16, PAD = 8;
+    static final int PLOT_W = Hud.PLOT_W, PLOT_H = Hud.PLOT_H;
+    static final int LABEL_H = 26, LEGEND_W = 220, LEGEND_H = 44;
+
+    /** x, y, width, height. */
+    static final class Rect {
+        final float x, y, w, h;
+
+        Rect(float x, float y, float w, float h) { this.x = x; this.y = y; this.w = w; this.h = h; }
+
+        boolean overlaps(Rect o) { return x < o.x + o.w && o.x < x + w && y < o.y + o.h && o.y < y + h; }
+
+        boolean inside(float width, float height) { return x >= 0 && y >= 0 && x + w <= width && y + h <= height; }
+
+        @Override public String toString() { return String.format(java.util.Locale.ROOT, "[%.0f,%.0f %.0fx%.0f]", x, y, w, h); }
+    }
+
+    final float width, height, charWidth;
+    Rect panel, strainPlot, energyPlot, legend, help;
+    /** Baseline of the notice line inside the panel, or -1 for none. */
+    float noticeY;
+    final Rect[] labels = new Rect[2];
+    /** Help: lines per column and the characters that fit in a column. */
+    int helpRows, helpColumns, helpColumnChars;
+    /** Characters that fit on a panel line. */
+    int panelChars;
+
+    /**
+     * @param panelLines lines of the parameter panel and the longest one's length in characters
+     * @param noticeChars 0 for no notice
+     * @param labelChars the side-by-side labels' lengths, or null when not side by side
+     * @param helpLines 0 when the help is closed; else its lines and longest line
+     */
+    HudLayout(float width, float height, float charWidth, int panelLines, int panelLongest, int noticeChars, int[] labelChars,
+              boolean legendShown, int helpLines, int helpLongest) {
+        this.width = width;
+        this.height = height;
+        this.charWidth = charWidth;
+        if (helpLines > 0) { layHelp(helpLines, helpLongest); return; }
+        float maxW = width - 2 * MARGIN;
+        // The notice is the panel's last line, so it covers no more of the scene (it used to sit on the pins).
+        int longest = Math.max(panelLongest, noticeChars), rows = panelLines + (noticeChars > 0 ? 1 : 0);
+        float pw = Math.min(longest * charWidth + 2 * PAD, maxW);
+        panel = new Rect(MARGIN, MARGIN, pw, LINE * rows + 12);
+        panelChars = (int) ((pw - 2 * PAD) / charWidth);
+        noticeY = noticeChars > 0 ? panel.y + 6 + LINE * panelLines : -1;
+        float below = panel.y + panel.h + 6;
+        energyPlot = new Rect(MARGIN, height - MARGIN - (PLOT_H + 22), PLOT_W + 8, PLOT_H + 22);
+        strainPlot = new Rect(MARGIN, energyPlot.y - 4 - (PLOT_H + 22), PLOT_W + 8, PLOT_H + 22);
+        if (labelChars != null) layLabels(labelChars);
+        if (legendShown) {
+            Rect topRight = new Rect(width - MARGIN - LEGEND_W, MARGIN, LEGEND_W, LEGEND_H);
+            legend = topRight.overlaps(panel) ? new Rect(MARGIN, below, LEGEND_W, LEGEND_H) : topRight;
+        }
+    }
+
+    /** The labels right of the plots: side by side if they fit, else the PBD one above the XPBD one. */
+    private void layLabels(int[] chars) {
+        float left = energyPlot.x + energyPlot.w + 10, span = width - MARGIN - left;
+        float w0 = Math.min(chars[0] * charWidth + 20, span), w1 = Math.min(chars[1] * charWidth + 20, span);
+        float y = height - MARGIN - LABEL_H;
+        if (w0 + 10 + w1 <= span) {
+            labels[0] = new Rect(left, y, w0, LABEL_H);
+            labels[1] = new Rect(width - MARGIN - w1, y, w1, LABEL_H);
+        } else {
+            labels[0] = new Rect(left, y - LABEL_H - 4, w0, LABEL_H);
+            labels[1] = new Rect(left, y, w1, LABEL_H);
+        }
+    }
+
+    private void layHelp(int lines, int longest) {
+        helpRows = Math.max(1, (int) ((height - 2 * MARGIN - 12) / HELP_LINE));
+        helpColumns = (lines + helpRows - 1) / helpRows;
+        float columnW = Math.min(longest * charWidth + 2 * PAD, (width - 2 * MARGIN) / helpColumns);
+        helpColumnChars = (int) ((columnW - 2 * PAD) / charWidth);
+        int rows = Math.min(lines, helpRows);
+        help = new Rect(MARGIN, MARGIN, columnW * helpColumns, HELP_LINE * rows + 12);
+    }
+
+    /** Every panel laid out (nulls left out). */
+    List<Rect> all() {
+        List<Rect> out = new ArrayList<>();
+        for (Rect r : new Rect[] {panel, strainPlot, energyPlot, legend, help, labels[0], labels[1]}) if (r != null) out.add(r);
+        return out;
+    }
+
+    /** s cut to n characters, with "…" when cut. */
+    static String cut(String s, int n) {
+        if (s.length() <= n) return s;
+        return n <= 1 ? "" : s.substring(0, n - 1) + "…";
+    }
+}
