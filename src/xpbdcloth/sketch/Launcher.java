@@ -46,6 +46,7 @@ public final class Launcher extends PApplet {
     /** Opens the window; returns at once (Processing runs its own animation thread). */
     public static void open(String scene, boolean sideBySide, ClothApp.Recording recording, int width, int height) {
         opened = true;
+        QuietJogl.install();
         PApplet.runSketch(new String[] {"xpbd-cloth"}, new Launcher(scene, sideBySide, recording, width, height));
     }
 }
