@@ -37,6 +37,7 @@ final class ClothRenderer {
      */
     void drawMesh(PGraphics g, Cloth cloth, double eyeX, double eyeY, double eyeZ) {
         computeNormals(cloth);
+        boolean[] dark = checker(cloth);
         double[] x = cloth.particles().positions();
         int[] t = cloth.triangles();
         g.noStroke();
@@ -49,12 +50,58 @@ final class ClothRenderer {
             boolean front = nx * (eyeX - x[a]) + ny * (eyeY - x[a + 1]) + nz * (eyeZ - x[a + 2]) >= 0;
             float sign = front ? 1 : -1;
             int[] col = front ? FRONT : BACK;
-            g.fill(col[0], col[1], col[2]);
+            float shade = dark[k / 3] ? CHECKER_SHADE : 1;
+            g.fill(shade * col[0], shade * col[1], shade * col[2]);
             vertex(g, x, a, sign);
             vertex(g, x, b, sign);
             vertex(g, x, c, sign);
         }
         g.endShape();
+    }
+
+    /** Squares across the cloth's longer side, and how much darker every second one is. */
+    static final int CHECKER_SQUARES = 12;
+    static final float CHECKER_SHADE = 0.8f;
+    private Cloth checkerFor;
+    private boolean[] checkerDark;
+
+    /**
+     * A checker printed on the cloth at rest, per triangle: the squares deform with the cloth, so stretch
+     * and shear show where the smooth shading alone hides them. Squares are laid in the rest mesh's two
+     * widest directions (a grid's rows and columns); computed once per cloth.
+     */
+    private boolean[] checker(Cloth cloth) {
+        if (checkerFor == cloth) return checkerDark;
+        xpbdcloth.mesh.ClothMesh m = cloth.mesh();
+        double[] lo = {Double.MAX_VALUE, Double.MAX_VALUE, Double.MAX_VALUE}, hi = {-Double.MAX_VALUE, -Double.MAX_VALUE, -Double.MAX_VALUE};
+        for (int i = 0; i < m.vertexCount(); i++) {
+            double[] p = {m.x(i), m.y(i), m.z(i)};
+            for (int d = 0; d < 3; d++) { lo[d] = Math.min(lo[d], p[d]); hi[d] = Math.max(hi[d], p[d]); }
+        }
+        int thin = 0;
+        for (int d = 1; d < 3; d++) if (hi[d] - lo[d] < hi[thin] - lo[thin]) thin = d;
+        int u = thin == 0 ? 1 : 0, v = thin == 2 ? 1 : 2;
+        double cellU = Math.max(Math.max(hi[u] - lo[u], hi[v] - lo[v]) / CHECKER_SQUARES, 1e-9), cellV = cellU;
+        if (cloth.isGrid() && cloth.columns() > 1 && cloth.rows() > 1) {
+            // Whole quads per square, so the squares' sides run along the threads instead of zigzagging.
+            int quads = Math.max(1, Math.round((Math.max(cloth.columns(), cloth.rows()) - 1) / (float) CHECKER_SQUARES));
+            cellU = Math.max(quads * (hi[u] - lo[u]) / (cloth.columns() - 1), 1e-9);
+            cellV = Math.max(quads * (hi[v] - lo[v]) / (cloth.rows() - 1), 1e-9);
+        }
+        int[] t = cloth.triangles();
+        boolean[] dark = new boolean[t.length / 3];
+        for (int k = 0; k < t.length; k += 3) {
+            double cu = 0, cv = 0;
+            for (int j = 0; j < 3; j++) {
+                double[] p = {m.x(t[k + j]), m.y(t[k + j]), m.z(t[k + j])};
+                cu += (p[u] - lo[u]) / 3;
+                cv += (p[v] - lo[v]) / 3;
+            }
+            dark[k / 3] = (((long) Math.floor(cu / cellU) + (long) Math.floor(cv / cellV)) & 1) == 1;
+        }
+        checkerFor = cloth;
+        checkerDark = dark;
+        return dark;
     }
 
     /** A cloth without triangles (a rope, one particle wide) as a thick polyline through its particles. */
