@@ -2,25 +2,23 @@ package xpbdcloth.engine;
 
 /**
  * The global solve: each iteration is one Newton–PCG step on all cloth constraints at once
- * ({@link GlobalSolver}), then a Gauss–Seidel pass over the attachments and the substep's contacts
+ * ({@link GlobalSolver}), then a Gauss–Seidel sweep over the attachments and the substep's contacts
  * (inequalities and moving targets, which a linear solve handles badly).
  */
 final class GlobalIterations implements SolveStage {
     private final GlobalSolver global;
-    private final Constraint[] attachments;
+    /** The attachments and contacts, swept after each global step. */
+    private final SequentialSweeps rest;
     private final Particles particles;
     private final SolverContext ctx;
-    private final ContactSet contacts;
     private final Simulation sim;
     private final SweepListener listener;
 
-    GlobalIterations(GlobalSolver global, Constraint[] attachments, Particles particles, SolverContext ctx, ContactSet contacts,
-                     Simulation sim, SweepListener listener) {
+    GlobalIterations(GlobalSolver global, SequentialSweeps rest, Particles particles, SolverContext ctx, Simulation sim, SweepListener listener) {
         this.global = global;
-        this.attachments = attachments;
+        this.rest = rest;
         this.particles = particles;
         this.ctx = ctx;
-        this.contacts = contacts;
         this.sim = sim;
         this.listener = listener;
     }
@@ -30,8 +28,7 @@ final class GlobalIterations implements SolveStage {
     @Override public void solve(int substep, int iterations) {
         for (int it = 0; it < iterations; it++) {
             global.iterate(particles, ctx);
-            for (Constraint c : attachments) c.project(particles, ctx);
-            contacts.project(particles, ctx);
+            rest.sweep();
             listener.afterSweep(sim, substep, it);
         }
     }
@@ -42,11 +39,7 @@ final class GlobalIterations implements SolveStage {
                 for (int it = 0; it < iterations; it++) {
                     global.iterate(particles, ctx);
                     probe.check(global);
-                    for (Constraint c : attachments) {
-                        c.project(particles, ctx);
-                        probe.check(c);
-                    }
-                    SequentialSweeps.projectContacts(particles, ctx, contacts, probe);
+                    rest.sweep(probe);
                 }
             }
 

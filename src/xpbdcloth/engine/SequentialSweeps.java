@@ -23,33 +23,36 @@ final class SequentialSweeps implements SolveStage {
 
     @Override public void solve(int substep, int iterations) {
         for (int it = 0; it < iterations; it++) {
-            for (Constraint c : order) c.project(particles, ctx);
-            contacts.project(particles, ctx);
+            sweep();
             listener.afterSweep(sim, substep, it);
+        }
+    }
+
+    /** One sweep: the constraints in order, then the contacts. */
+    void sweep() {
+        for (Constraint c : order) c.project(particles, ctx);
+        contacts.project(particles, ctx);
+    }
+
+    /** The same sweep, the state checked after every projection. */
+    void sweep(StepProbe probe) {
+        for (Constraint c : order) {
+            c.project(particles, ctx);
+            probe.check(c);
+        }
+        for (int k = 0; k < contacts.count(); k++) {
+            contacts.project(particles, ctx, k);
+            probe.check(contacts.particle(k), ConstraintFamily.COLLISION);
         }
     }
 
     @Override public SolveStage probed(StepProbe probe) {
         return new SolveStage() {
             @Override public void solve(int substep, int iterations) {
-                for (int it = 0; it < iterations; it++) {
-                    for (Constraint c : order) {
-                        c.project(particles, ctx);
-                        probe.check(c);
-                    }
-                    projectContacts(particles, ctx, contacts, probe);
-                }
+                for (int it = 0; it < iterations; it++) sweep(probe);
             }
 
             @Override public SolveStage probed(StepProbe p) { return this; }
         };
-    }
-
-    /** The contacts one by one, each checked (shared by the probed stages). */
-    static void projectContacts(Particles particles, SolverContext ctx, ContactSet contacts, StepProbe probe) {
-        for (int k = 0; k < contacts.count(); k++) {
-            contacts.project(particles, ctx, k);
-            probe.check(contacts.particle(k), ConstraintFamily.COLLISION);
-        }
     }
 }

@@ -226,7 +226,8 @@ public final class Simulation {
         GlobalSolver g = type == SolverType.GAUSS_SEIDEL ? null : globalSolver(); // remade if the PCG settings changed
         if (solve != null && solvedFor.matches(type, coloured, threads, sweepListener, g)) return solve;
         if (type != SolverType.GAUSS_SEIDEL) {
-            solve = new GlobalIterations(g, attachments.toArray(new Constraint[0]), particles, ctx, contacts, this, sweepListener);
+            SequentialSweeps rest = new SequentialSweeps(attachments.toArray(new Constraint[0]), particles, ctx, contacts, this, sweepListener);
+            solve = new GlobalIterations(g, rest, particles, ctx, this, sweepListener);
         } else if (!coloured) {
             solve = new SequentialSweeps(order, particles, ctx, contacts, this, sweepListener);
         } else {
