@@ -27,7 +27,7 @@ public final class AttachmentConstraint extends Constraint {
     public double targetZ() { return tz; }
 
     public void moveTarget(double x, double y, double z) {
-        Check.finite3("target", x, y, z);
+        EngineRange.vector("target", x, y, z, EngineRange.MAX_POSITION);
         tx = x; ty = y; tz = z;
     }
 

@@ -32,6 +32,12 @@ public final class Check {
         return value;
     }
 
+    /** An integer in [lo, hi] (said as integers). */
+    public static int inRange(String name, long value, long lo, long hi) {
+        if (value < lo || value > hi) throw new IllegalArgumentException(name + " must be in [" + lo + ", " + hi + "], was " + value);
+        return (int) value;
+    }
+
     /** An integer ≥ min. */
     public static int atLeast(String name, int value, int min) {
         if (value < min) throw new IllegalArgumentException(name + " must be >= " + min + ", was " + value);

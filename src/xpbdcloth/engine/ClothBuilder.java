@@ -40,7 +40,10 @@ public final class ClothBuilder {
     public ClothBuilder resolution(int columns, int rows) {
         Check.atLeast("columns", columns, 1);
         Check.atLeast("rows", rows, 1);
-        if (columns * (long) rows < 2) throw new IllegalArgumentException("columns*rows must be >= 2, was " + columns * rows);
+        long n = columns * (long) rows;
+        if (n < 2) throw new IllegalArgumentException("columns*rows must be >= 2, was " + n);
+        if (n > EngineRange.MAX_PARTICLES)
+            throw new IllegalArgumentException("columns*rows must be <= " + EngineRange.MAX_PARTICLES + " (2048 x 2048), was " + columns + " x " + rows + " = " + n);
         this.columns = columns;
         this.rows = rows;
         return this;

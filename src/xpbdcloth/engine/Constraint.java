@@ -46,7 +46,7 @@ public abstract class Constraint {
 
     /** XPBD compliance α ≥ 0 in m/N. */
     public final void setCompliance(double alpha) {
-        compliance = Check.nonNegative("compliance", alpha);
+        compliance = Check.inRange("compliance", alpha, 0, EngineRange.MAX_COMPLIANCE);
     }
 
     /** The λ accumulated so far in this substep (XPBD; in PBD mode, the sum of the Δλ applied). */

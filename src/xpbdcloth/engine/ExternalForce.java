@@ -8,4 +8,7 @@ public interface ExternalForce {
      * step's start and dt the step (s) the forces will act over.
      */
     void apply(Particles particles, double t, double dt);
+
+    /** Refuses, when added to a simulation, what would fail inside a step (an index past its particles). */
+    default void check(Particles particles) { }
 }

@@ -24,7 +24,7 @@ public final class Particles {
 
     /** {@code count} particles at the origin, each of mass 1 kg. */
     public Particles(int count) {
-        this.count = Check.atLeast("particleCount", count, 1);
+        this.count = Check.inRange("particleCount", count, 1, EngineRange.MAX_PARTICLES);
         x = new double[3 * count];
         prev = new double[3 * count];
         v = new double[3 * count];
@@ -58,7 +58,7 @@ public final class Particles {
     /** Moves particle i (pinned ones included) and its previous position, so no velocity is implied. */
     public void setPosition(int i, double px, double py, double pz) {
         Check.index("particle", i, count);
-        Check.finite3("position", px, py, pz);
+        EngineRange.vector("position", px, py, pz, EngineRange.MAX_POSITION);
         int k = 3 * i;
         x[k] = px; x[k + 1] = py; x[k + 2] = pz;
         prev[k] = px; prev[k + 1] = py; prev[k + 2] = pz;
@@ -69,13 +69,15 @@ public final class Particles {
      * the motion as the particle's velocity (a pinned corner being pulled drags the cloth with that speed).
      */
     public void moveKinematic(int i, double px, double py, double pz) {
+        Check.index("particle", i, count);
+        EngineRange.vector("position", px, py, pz, EngineRange.MAX_POSITION);
         int k = 3 * i;
         x[k] = px; x[k + 1] = py; x[k + 2] = pz;
     }
 
     public void setVelocity(int i, double vx, double vy, double vz) {
         Check.index("particle", i, count);
-        Check.finite3("velocity", vx, vy, vz);
+        EngineRange.vector("velocity", vx, vy, vz, EngineRange.MAX_SPEED);
         int k = 3 * i;
         v[k] = vx; v[k + 1] = vy; v[k + 2] = vz;
     }
@@ -83,7 +85,7 @@ public final class Particles {
     /** Sets the mass (kg, &gt; 0) of a free particle; a pinned particle keeps w = 0 until released. */
     public void setMass(int i, double m) {
         Check.index("particle", i, count);
-        Check.positive("mass", m);
+        Check.inRange("mass", m, EngineRange.MIN_MASS, EngineRange.MAX_MASS);
         mass[i] = m;
         if (w[i] != 0) w[i] = 1.0 / m;
     }
@@ -103,6 +105,8 @@ public final class Particles {
 
     /** Adds an external force (N) acting during the next step only. */
     public void addForce(int i, double fx, double fy, double fz) {
+        Check.index("particle", i, count);
+        EngineRange.vector("force", fx, fy, fz, EngineRange.MAX_FORCE);
         int k = 3 * i;
         force[k] += fx; force[k + 1] += fy; force[k + 2] += fz;
     }

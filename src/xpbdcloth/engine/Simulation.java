@@ -100,6 +100,7 @@ public final class Simulation {
 
     public Simulation add(ExternalForce f) {
         if (f == null) throw new IllegalArgumentException("force must not be null, was null");
+        f.check(particles);
         forces.add(f);
         return this;
     }

@@ -65,7 +65,7 @@ public final class SolverSettings {
     public int iterations() { return iterations; }
 
     public SolverSettings iterations(int n) {
-        iterations = Check.atLeast("iterations", n, 1);
+        iterations = Check.inRange("iterations", n, 1, EngineRange.MAX_ITERATIONS);
         revision++;
         return this;
     }
@@ -74,7 +74,7 @@ public final class SolverSettings {
     public int substeps() { return substeps; }
 
     public SolverSettings substeps(int s) {
-        substeps = Check.atLeast("substeps", s, 1);
+        substeps = Check.inRange("substeps", s, 1, EngineRange.MAX_SUBSTEPS);
         return this;
     }
 
@@ -82,7 +82,7 @@ public final class SolverSettings {
     public double timestep() { return timestep; }
 
     public SolverSettings timestep(double dt) {
-        timestep = Check.positive("dt", dt);
+        timestep = Check.inRange("dt", dt, EngineRange.MIN_DT, EngineRange.MAX_DT);
         return this;
     }
 
@@ -104,7 +104,7 @@ public final class SolverSettings {
     public double gravityZ() { return gravityZ; }
 
     public SolverSettings gravity(double gx, double gy, double gz) {
-        Check.finite3("gravity", gx, gy, gz);
+        EngineRange.vector("gravity", gx, gy, gz, EngineRange.MAX_GRAVITY);
         gravityX = gx; gravityY = gy; gravityZ = gz;
         return this;
     }
@@ -160,7 +160,7 @@ public final class SolverSettings {
     public int pcgMaxIterations() { return pcgMaxIterations; }
 
     public SolverSettings pcgMaxIterations(int n) {
-        pcgMaxIterations = Check.atLeast("pcgMaxIterations", n, 1);
+        pcgMaxIterations = Check.inRange("pcgMaxIterations", n, 1, EngineRange.MAX_PCG_ITERATIONS);
         return this;
     }
 

@@ -27,8 +27,8 @@ public final class Sphere {
     public Sphere(SpherePath path, double radius, double margin, double staticFriction, double kineticFriction) {
         if (path == null) throw new IllegalArgumentException("path must not be null, was null");
         this.path = path;
-        this.radius = Check.positive("radius", radius);
-        this.margin = Check.nonNegative("margin", margin);
+        this.radius = Check.inRange("radius", radius, Double.MIN_NORMAL, EngineRange.MAX_RADIUS);
+        this.margin = Check.inRange("margin", margin, 0, EngineRange.MAX_RADIUS);
         this.staticFriction = Check.nonNegative("staticFriction", staticFriction);
         this.kineticFriction = Check.nonNegative("kineticFriction", kineticFriction);
         moveTo(0);

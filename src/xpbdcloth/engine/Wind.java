@@ -49,6 +49,10 @@ public final class Wind implements ExternalForce {
         ux = x; uy = y; uz = z;
     }
 
+    @Override public void check(Particles p) {
+        for (int k = 0; k < triangles.length; k++) Check.index("triangle " + k / 3 + " corner", triangles[k], p.count());
+    }
+
     @Override public void apply(Particles p, double t, double dt) {
         final int n = p.count();
         if (rate == null || rate.length != n) { rate = new double[n]; pending = new double[3 * n]; }

@@ -40,6 +40,11 @@ public final class Fuzz implements Callable<Integer> {
      * mode and solver; a switch the settings must refuse (PBD with a global solver) is tried too, and
      * must be refused with a message naming the parameter while changing nothing.
      */
+    private static boolean inRange(xpbdcloth.engine.Particles p, int i) {
+        double max = xpbdcloth.engine.EngineRange.MAX_POSITION;
+        return Math.abs(p.x(i)) < max && Math.abs(p.y(i)) < max && Math.abs(p.z(i)) < max;
+    }
+
     public static String runCase(long seed, SolverType solver) {
         Random r = new Random(seed);
         String[] illegal = r.nextInt(10) == 0 ? pickIllegal(r) : null;
@@ -51,7 +56,9 @@ public final class Fuzz implements Callable<Integer> {
             for (int k = 0; k < steps; k++) {
                 if (grab == null && r.nextInt(8) == 0) {
                     int i = r.nextInt(sim.particles().count());
-                    grab = sim.attach(i, sim.particles().x(i), sim.particles().y(i), sim.particles().z(i));
+                    // A particle flung beyond the engine's range (finite, but 1e9 m away) cannot be grabbed:
+                    // the target is refused, as it should be, so the fuzzer grabs only what is in range.
+                    if (inRange(sim.particles(), i)) grab = sim.attach(i, sim.particles().x(i), sim.particles().y(i), sim.particles().z(i));
                 }
                 if (grab != null) grab.moveTarget(grab.targetX() + r.nextGaussian() * 0.05, grab.targetY() + r.nextGaussian() * 0.05, grab.targetZ());
                 if (grab != null && r.nextInt(10) == 0) { sim.release(grab); grab = null; }
