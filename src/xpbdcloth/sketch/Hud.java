@@ -102,7 +102,7 @@ final class Hud {
     /** The layout, recomputed only when what it depends on changes (it allocates). */
     private HudLayout layout(PGraphics g, SketchState s, String[] labels) {
         if (charWidth < 0) charWidth = g.textWidth("M");
-        int labelChars = labels == null ? -1 : labels[0].length() * 1000 + labels[1].length();
+        int labelChars = labels == null ? -1 : HudLayout.steps(labels[0].length()) * 1000 + HudLayout.steps(labels[1].length());
         if (layout == null || layout.width != g.width || layout.height != g.height || laidLines != lines || laidMessage != s.message()
                 || laidHelp != s.showHelp || laidLegend != s.wireframe || laidLabelChars != labelChars) {
             int longest = 0;

@@ -57,7 +57,7 @@ final class HudLayout {
         if (helpLines > 0) { layHelp(helpLines, helpLongest); return; }
         float maxW = width - 2 * MARGIN;
         // The notice is the panel's last line, so it covers no more of the scene (it used to sit on the pins).
-        int longest = Math.max(panelLongest, noticeChars), rows = panelLines + (noticeChars > 0 ? 1 : 0);
+        int longest = steps(Math.max(panelLongest, noticeChars)), rows = panelLines + (noticeChars > 0 ? 1 : 0);
         float pw = Math.min(longest * charWidth + 2 * PAD, maxW);
         panel = new Rect(MARGIN, MARGIN, pw, LINE * rows + 12);
         panelChars = (int) ((pw - 2 * PAD) / charWidth);
@@ -75,7 +75,7 @@ final class HudLayout {
     /** The labels right of the plots: side by side if they fit, else the PBD one above the XPBD one. */
     private void layLabels(int[] chars) {
         float left = energyPlot.x + energyPlot.w + 10, span = width - MARGIN - left;
-        float w0 = Math.min(chars[0] * charWidth + 20, span), w1 = Math.min(chars[1] * charWidth + 20, span);
+        float w0 = Math.min(steps(chars[0]) * charWidth + 20, span), w1 = Math.min(steps(chars[1]) * charWidth + 20, span);
         float y = height - MARGIN - LABEL_H;
         if (w0 + 10 + w1 <= span) {
             labels[0] = new Rect(left, y, w0, LABEL_H);
@@ -101,6 +101,9 @@ final class HudLayout {
         for (Rect r : new Rect[] {panel, strainPlot, energyPlot, legend, help, labels[0], labels[1]}) if (r != null) out.add(r);
         return out;
     }
+
+    /** Widths in steps of 5 characters, so panels do not twitch as the numbers in them change length. */
+    static int steps(int chars) { return (chars + 4) / 5 * 5; }
 
     /** s cut to n characters, with "…" when cut. */
     static String cut(String s, int n) {
