@@ -53,6 +53,8 @@ public final class Check {
 
     /** Three finite components, reported as name.x / name.y / name.z. */
     public static void finite3(String name, double x, double y, double z) {
+        // The names are built only on failure: this guards calls made per particle per step.
+        if (Double.isFinite(x) && Double.isFinite(y) && Double.isFinite(z)) return;
         finite(name + ".x", x);
         finite(name + ".y", y);
         finite(name + ".z", z);

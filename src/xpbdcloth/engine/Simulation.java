@@ -289,7 +289,7 @@ public final class Simulation {
     /** Conjugate-gradient iterations of the last global iteration (0 with Gauss–Seidel). */
     public int lastPcgIterations() { return global == null || settings.solver() == SolverType.GAUSS_SEIDEL ? 0 : global.lastIterations(); }
 
-    /** Global iterations whose step was not taken (see {@link GlobalSolver#iterate}), 0 with Gauss–Seidel. */
+    /** Global iterations whose step was not taken since the global solver was built (see {@link GlobalSolver#iterate}). */
     public int rejectedGlobalSteps() { return global == null ? 0 : global.rejectedSteps(); }
 
     /** Conjugate-gradient iterations since the global solver was built. */
