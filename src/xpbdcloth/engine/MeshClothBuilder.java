@@ -137,10 +137,10 @@ public final class MeshClothBuilder {
             if (Double.isNaN(totalMass))
                 throw new IllegalArgumentException("arealDensity needs a mesh of non-zero area (use totalMass for a polyline or a flat-collapsed mesh), area was " + total);
             int[] s = mesh.segments();
-            for (int i = 0; i < s.length; i += 2) {
-                double l = Math.sqrt(sq(mesh.x(s[i]) - mesh.x(s[i + 1])) + sq(mesh.y(s[i]) - mesh.y(s[i + 1])) + sq(mesh.z(s[i]) - mesh.z(s[i + 1])));
-                share[s[i]] += l / 2;
-                share[s[i + 1]] += l / 2;
+            for (int k = 0; k < mesh.segmentCount(); k++) {
+                double l = mesh.segmentLength(k);
+                share[s[2 * k]] += l / 2;
+                share[s[2 * k + 1]] += l / 2;
                 total += l;
             }
         }
@@ -154,8 +154,6 @@ public final class MeshClothBuilder {
         }
         return m;
     }
-
-    private static double sq(double v) { return v * v; }
 
     private static Constraint tuned(Constraint c, double[] kAlpha) {
         c.setStiffness(kAlpha[0]);

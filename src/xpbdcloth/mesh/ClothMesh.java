@@ -1,6 +1,5 @@
 package xpbdcloth.mesh;
 
-import java.util.Arrays;
 import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.Map;
@@ -21,8 +20,14 @@ public final class ClothMesh {
     private final int[] triangles;
     private final int[] segments;
     private final Map<String, int[]> groups;
+    /** The bounding box, per axis (x, y, z). */
+    private final double[] min = {Double.MAX_VALUE, Double.MAX_VALUE, Double.MAX_VALUE}, max = {-Double.MAX_VALUE, -Double.MAX_VALUE, -Double.MAX_VALUE};
 
     private ClothMesh(double[] positions, int[][] faces, int[] triangles, int[] segments, Map<String, int[]> groups) {
+        for (int i = 0; i < positions.length; i++) {
+            min[i % 3] = Math.min(min[i % 3], positions[i]);
+            max[i % 3] = Math.max(max[i % 3], positions[i]);
+        }
         this.positions = positions;
         this.faces = faces;
         this.triangles = triangles;
@@ -98,6 +103,12 @@ public final class ClothMesh {
     public double y(int i) { return positions[3 * i + 1]; }
     public double z(int i) { return positions[3 * i + 2]; }
 
+    /** The smallest coordinate along an axis (0 = x, 1 = y, 2 = z) of any vertex. */
+    public double min(int axis) { return min[axis]; }
+
+    /** The largest coordinate along an axis of any vertex. */
+    public double max(int axis) { return max[axis]; }
+
     /** A copy of the positions, 3 per vertex. */
     public double[] positions() { return positions.clone(); }
 
@@ -126,17 +137,11 @@ public final class ClothMesh {
     }
 
     /** Vertices inside the axis-aligned box [min, max] (inclusive), in index order. */
-    public int[] inBox(double[] min, double[] max) {
-        return Arrays.stream(range(vertexCount())).filter(i -> {
-            for (int d = 0; d < 3; d++) if (positions[3 * i + d] < min[d] || positions[3 * i + d] > max[d]) return false;
+    public int[] inBox(double[] lo, double[] hi) {
+        return java.util.stream.IntStream.range(0, vertexCount()).filter(i -> {
+            for (int d = 0; d < 3; d++) if (positions[3 * i + d] < lo[d] || positions[3 * i + d] > hi[d]) return false;
             return true;
         }).toArray();
-    }
-
-    private static int[] range(int n) {
-        int[] r = new int[n];
-        for (int i = 0; i < n; i++) r[i] = i;
-        return r;
     }
 
     /** Area of face k: the sum of its fan triangles' areas (exact for a planar convex polygon). */
@@ -162,14 +167,13 @@ public final class ClothMesh {
         return a;
     }
 
-    /** Total length of the segments (m). */
-    public double segmentLength() {
-        double l = 0;
-        for (int i = 0; i < segments.length; i += 2) l += distance(segments[i], segments[i + 1]);
-        return l;
-    }
+    public int segmentCount() { return segments.length / 2; }
 
-    double distance(int a, int b) {
+    /** Length of segment k (m). */
+    public double segmentLength(int k) { return distance(segments[2 * k], segments[2 * k + 1]); }
+
+    /** Distance between vertices a and b (m). */
+    public double distance(int a, int b) {
         double dx = positions[3 * b] - positions[3 * a], dy = positions[3 * b + 1] - positions[3 * a + 1], dz = positions[3 * b + 2] - positions[3 * a + 2];
         return Math.sqrt(dx * dx + dy * dy + dz * dz);
     }

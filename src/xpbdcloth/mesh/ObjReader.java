@@ -169,10 +169,6 @@ public final class ObjReader {
                         throw fail(ln, "face is degenerate: corners " + (i + 1) + " (" + tok[i + 1] + ") and " + (j + 1) + " (" + tok[j + 1] + ") are the same vertex"
                                 + (tolerance > 0 ? " after welding within " + tolerance + " m" : ""));
             }
-            double area = 0, longest = 0;
-            for (int j = 1; j + 1 < f.length; j++) area += area(f[0], f[j], f[j + 1]);
-            for (int j = 0; j < f.length; j++) longest = Math.max(longest, distance(f[j], f[(j + 1) % f.length]));
-            if (area <= DEGENERATE_AREA * longest * longest) throw fail(ln, "face is degenerate: its area is " + area + " m² (its corners are in a line)");
             int[] sorted = f.clone();
             Arrays.sort(sorted);
             Integer twin = faceKeys.putIfAbsent(Arrays.toString(sorted), ln);
@@ -221,19 +217,6 @@ public final class ObjReader {
             return "(" + p[0] + ", " + p[1] + ", " + p[2] + ")";
         }
 
-        double area(int a, int b, int c) {
-            double[] p = welded.get(a), q = welded.get(b), r = welded.get(c);
-            double e1x = q[0] - p[0], e1y = q[1] - p[1], e1z = q[2] - p[2];
-            double e2x = r[0] - p[0], e2y = r[1] - p[1], e2z = r[2] - p[2];
-            double nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
-            return 0.5 * Math.sqrt(nx * nx + ny * ny + nz * nz);
-        }
-
-        double distance(int a, int b) {
-            double[] p = welded.get(a), q = welded.get(b);
-            return Math.sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
-        }
-
         /** Drops unused welded vertices and renumbers the rest in file order. */
         ClothMesh build() {
             int[] newIndex = new int[welded.size()];
@@ -254,7 +237,15 @@ public final class ObjReader {
             for (int k = 0; k < segments.size(); k++) { s[2 * k] = newIndex[segments.get(k)[0]]; s[2 * k + 1] = newIndex[segments.get(k)[1]]; }
             Map<String, int[]> g = new LinkedHashMap<>();
             groups.forEach((name, vs) -> g.put(name, vs.stream().mapToInt(v -> newIndex[v]).sorted().toArray()));
-            return ClothMesh.of(positions, f, null, s, g);
+            ClothMesh mesh = ClothMesh.of(positions, f, null, s, g);
+            for (int k = 0; k < mesh.faceCount(); k++) {
+                int[] corners = mesh.face(k);
+                double longest = 0;
+                for (int j = 0; j < corners.length; j++) longest = Math.max(longest, mesh.distance(corners[j], corners[(j + 1) % corners.length]));
+                double area = mesh.faceArea(k);
+                if (area <= DEGENERATE_AREA * longest * longest) throw fail(faceLines.get(k), "face is degenerate: its area is " + area + " m² (its corners are in a line)");
+            }
+            return mesh;
         }
     }
 }

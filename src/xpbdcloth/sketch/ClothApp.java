@@ -114,30 +114,20 @@ public final class ClothApp {
     }
 
     /** A mesh cloth is framed by its rest bounding box; a flat-lying one (it will fall and drape) from higher up. */
-    private void frameMesh(ClothMesh mesh) {
-        double[] b = bounds(mesh);
-        double size = Math.max(Math.max(b[1] - b[0], b[3] - b[2]), Math.max(b[5] - b[4], 0.6));
-        boolean lying = b[3] - b[2] < 0.2 * size;
-        double cy = lying ? b[3] - 0.3 * size : 0.5 * (b[2] + b[3]);
+    private void frameMesh(ClothMesh m) {
+        double height = m.max(1) - m.min(1);
+        double size = Math.max(Math.max(m.max(0) - m.min(0), height), Math.max(m.max(2) - m.min(2), 0.6));
+        boolean lying = height < 0.2 * size;
+        double cy = lying ? m.max(1) - 0.3 * size : 0.5 * (m.min(1) + m.max(1));
         double distance = size * (framedSideBySide ? 2.6 : 1.5) + 0.4;
-        camera.setStartView(0.5 * (b[0] + b[1]), cy, 0.5 * (b[4] + b[5]), distance, lying ? -0.55 : -0.15);
-    }
-
-    /** (min x, max x, min y, max y, min z, max z) of a mesh's vertices. */
-    static double[] bounds(ClothMesh mesh) {
-        double[] b = {Double.MAX_VALUE, -Double.MAX_VALUE, Double.MAX_VALUE, -Double.MAX_VALUE, Double.MAX_VALUE, -Double.MAX_VALUE};
-        for (int i = 0; i < mesh.vertexCount(); i++) {
-            double[] p = {mesh.x(i), mesh.y(i), mesh.z(i)};
-            for (int d = 0; d < 3; d++) { b[2 * d] = Math.min(b[2 * d], p[d]); b[2 * d + 1] = Math.max(b[2 * d + 1], p[d]); }
-        }
-        return b;
+        camera.setStartView(0.5 * (m.min(0) + m.max(0)), cy, 0.5 * (m.min(2) + m.max(2)), distance, lying ? -0.55 : -0.15);
     }
 
     /** World offset along x of running scene i: the pair stands side by side, PBD on the left. */
     double offsetX(int i) {
         if (!state.sideBySide()) return 0;
         Preset.Cloth c = state.preset().cloth;
-        double width = c.isMesh() ? bounds(c.mesh)[1] - bounds(c.mesh)[0] : c.width;
+        double width = c.isMesh() ? c.mesh.max(0) - c.mesh.min(0) : c.width;
         double gap = Math.max(width, 0.6) * 0.65 + 0.15;
         for (Preset.SphereSpec s : state.preset().spheres) gap = Math.max(gap, s.radius * 2.2);
         return i == 0 ? -gap : gap;

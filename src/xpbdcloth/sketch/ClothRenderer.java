@@ -73,11 +73,7 @@ final class ClothRenderer {
     private boolean[] checker(Cloth cloth) {
         if (checkerFor == cloth) return checkerDark;
         xpbdcloth.mesh.ClothMesh m = cloth.mesh();
-        double[] lo = {Double.MAX_VALUE, Double.MAX_VALUE, Double.MAX_VALUE}, hi = {-Double.MAX_VALUE, -Double.MAX_VALUE, -Double.MAX_VALUE};
-        for (int i = 0; i < m.vertexCount(); i++) {
-            double[] p = {m.x(i), m.y(i), m.z(i)};
-            for (int d = 0; d < 3; d++) { lo[d] = Math.min(lo[d], p[d]); hi[d] = Math.max(hi[d], p[d]); }
-        }
+        double[] lo = {m.min(0), m.min(1), m.min(2)}, hi = {m.max(0), m.max(1), m.max(2)};
         int thin = 0;
         for (int d = 1; d < 3; d++) if (hi[d] - lo[d] < hi[thin] - lo[thin]) thin = d;
         int u = thin == 0 ? 1 : 0, v = thin == 2 ? 1 : 2;
