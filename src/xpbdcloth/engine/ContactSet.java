@@ -25,7 +25,6 @@ final class ContactSet {
 
     int count() { return count; }
     int particle(int k) { return particle[k]; }
-    Sphere sphere(int k) { return sphere[k]; }
 
     /** Makes room for every particle against every sphere (when spheres are added, never during a step). */
     void reserve(int particles, int spheres) {
@@ -61,6 +60,4 @@ final class ContactSet {
     void project(Particles p, SolverContext ctx, int k) {
         SphereCollisionConstraint.project(p, particle[k], sphere[k], ctx.h);
     }
-
-    void clear() { count = 0; }
 }

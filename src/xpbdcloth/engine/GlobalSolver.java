@@ -34,7 +34,7 @@ final class GlobalSolver {
     private final double[] move, start;
     private AggregationMultigrid mg;
     private int lastIterations, totalIterations, rejectedSteps;
-    private double lastRelativeResidual, lastStep = 1;
+    private double lastRelativeResidual;
 
     /**
      * Levenberg–Marquardt damping μ: the matrix solved is J W Jᵀ + μ·diag(J W Jᵀ) + α̃. Hard constraints
@@ -145,8 +145,6 @@ final class GlobalSolver {
     int lastIterations() { return lastIterations; }
     int totalIterations() { return totalIterations; }
     double lastRelativeResidual() { return lastRelativeResidual; }
-    /** The step length s the last iteration's line search took (1 = the full Newton step, 0 = none). */
-    double lastStep() { return lastStep; }
     /** Iterations whose step was not taken (no decrease of the merit, or a non-finite Δλ). */
     int rejectedSteps() { return rejectedSteps; }
     long multigridSetupNanos() { return mg == null ? 0 : mg.setupNanos; }
@@ -188,12 +186,10 @@ final class GlobalSolver {
             double merit = meritAt(particles, s);
             if (merit <= merit0 + 2 * ARMIJO * s * slope) {
                 for (int i = 0; i < m; i++) cs[i].lambda += s * dl[i];
-                lastStep = s;
                 return;
             }
         }
         System.arraycopy(start, 0, x, 0, x.length);
-        lastStep = 0;
         rejectedSteps++;
     }
 

@@ -1,7 +1,5 @@
 package xpbdcloth.scene;
 
-import java.util.Locale;
-
 /**
  * The ranges a preset's numbers must lie in, one table for the loader, the sketch's keys and the preset
  * fuzzer ({@code gradle fuzz -Ppresets}), which draws every field across its range, edges included,

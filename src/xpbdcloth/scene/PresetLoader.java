@@ -277,10 +277,9 @@ public final class PresetLoader {
             if (p.json.size() != 1) throw fail(p.path, "must have exactly one of group, box");
             Node g = optional(p, "group");
             if (g != null) {
+                String name = string(g);
                 try {
-                    return mesh.group(string(g));
-                } catch (PresetException e) {
-                    throw e;
+                    return mesh.group(name);
                 } catch (IllegalArgumentException e) {
                     throw fail(g.path, e.getMessage().replaceFirst("^group ", ""));
                 }

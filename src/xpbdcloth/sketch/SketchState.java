@@ -153,11 +153,12 @@ public final class SketchState {
 
     public void toggleMode() {
         if (sideBySide) { say("side by side shows both: PBD left, XPBD right"); return; }
-        if (shared.mode() == ConstraintMode.XPBD && shared.solver() != SolverType.GAUSS_SEIDEL) {
+        try {
+            shared.mode(shared.mode() == ConstraintMode.PBD ? ConstraintMode.XPBD : ConstraintMode.PBD);
+        } catch (IllegalArgumentException refused) { // the engine's rule: PBD needs Gauss–Seidel
             error("PBD runs on Gauss-Seidel only (its k is defined per projection): press v for gauss-seidel first");
             return;
         }
-        shared.mode(shared.mode() == ConstraintMode.PBD ? ConstraintMode.XPBD : ConstraintMode.PBD);
         applyAll();
         say("mode " + shared.mode());
     }
@@ -170,12 +171,16 @@ public final class SketchState {
 
     /** Gauss–Seidel → Jacobi-PCG → multigrid-PCG → Gauss–Seidel, for the running scenes. */
     public void cycleSolver() {
-        if (sideBySide || shared.mode() == ConstraintMode.PBD) {
-            error((sideBySide ? "side by side runs PBD on the left" : "PBD mode") + ", which needs Gauss-Seidel: the solver is unchanged (press m for XPBD)");
+        String unchanged = ", which needs Gauss-Seidel: the solver is unchanged (press m for XPBD)";
+        // Side by side, the left cloth is PBD whatever the shared mode.
+        if (sideBySide) { error("side by side runs PBD on the left" + unchanged); return; }
+        SolverType[] all = SolverType.values();
+        try {
+            shared.solver(all[(shared.solver().ordinal() + 1) % all.length]);
+        } catch (IllegalArgumentException refused) { // the engine's rule: a global solve needs XPBD
+            error("PBD mode" + unchanged);
             return;
         }
-        SolverType[] all = SolverType.values();
-        shared.solver(all[(shared.solver().ordinal() + 1) % all.length]);
         applyAll();
         say("solver " + shared.solver().label() + (shared.solver() == SolverType.GAUSS_SEIDEL ? "" : ": each iteration is one global Newton step; contacts stay Gauss-Seidel"));
     }

@@ -40,11 +40,6 @@ public final class Fuzz implements Callable<Integer> {
      * mode and solver; a switch the settings must refuse (PBD with a global solver) is tried too, and
      * must be refused with a message naming the parameter while changing nothing.
      */
-    private static boolean inRange(xpbdcloth.engine.Particles p, int i) {
-        double max = xpbdcloth.engine.EngineRange.MAX_POSITION;
-        return Math.abs(p.x(i)) < max && Math.abs(p.y(i)) < max && Math.abs(p.z(i)) < max;
-    }
-
     public static String runCase(long seed, SolverType solver) {
         Random r = new Random(seed);
         String[] illegal = r.nextInt(10) == 0 ? pickIllegal(r) : null;
@@ -89,6 +84,12 @@ public final class Fuzz implements Callable<Integer> {
         } catch (RuntimeException | Error e) {
             return "seed " + seed + ": " + e;
         }
+    }
+
+    /** Whether particle i is within the engine's position range (so a grab target there is legal). */
+    private static boolean inRange(xpbdcloth.engine.Particles p, int i) {
+        double max = xpbdcloth.engine.EngineRange.MAX_POSITION;
+        return Math.abs(p.x(i)) < max && Math.abs(p.y(i)) < max && Math.abs(p.z(i)) < max;
     }
 
     /** A global iteration is a whole linear solve: at most 10 × 10 of them per step, so a case costs < 1 s. */

@@ -149,7 +149,7 @@ public final class Main implements Callable<Integer> {
             long t0 = System.nanoTime();
             int n = xpbdcloth.scene.ObjExport.recordSequence(preset, frames, obj.toPath());
             System.out.printf(java.util.Locale.ROOT, "wrote %d OBJ frames of %s (%d vertices each, 60 frames per second of simulated time) into %s in %.1f s%n",
-                    n, sketch.scene, xpbdcloth.scene.Scene.of(preset).cloth().particles().count(), obj, (System.nanoTime() - t0) / 1e9);
+                    n, sketch.scene, preset.cloth.isMesh() ? preset.cloth.mesh.vertexCount() : preset.cloth.columns * preset.cloth.rows, obj, (System.nanoTime() - t0) / 1e9);
             return 0;
         }
     }
