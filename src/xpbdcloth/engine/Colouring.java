@@ -3,63 +3,59 @@ package xpbdcloth.engine;
 import java.util.List;
 
 /**
- * Greedy graph colouring of constraints: constraint i gets the smallest colour that no earlier
- * constraint sharing one of its particles has. Within a colour the original order is kept, so the
- * result is deterministic. Built when the set of constraints changes, never during a step.
+ * Greedy graph colouring of the constraints of some blocks, taken in order (block by block, index by
+ * index): each constraint gets the smallest colour that no earlier constraint sharing one of its
+ * particles has. Within a colour the original order is kept, so the result is deterministic, and a
+ * colour's constraints, sharing no particle, can be projected in any order or on any number of threads
+ * with the same result. Built when the set of constraints changes, never during a step.
  */
 final class Colouring {
-    /** The constraints grouped by colour. */
-    final Constraint[] ordered;
-    /** Colour c holds ordered[start[c] .. start[c + 1]). */
-    final int[] start;
+    final List<ConstraintBlock> blocks;
+    final int colours;
+    /** For block b: its constraint indices grouped by colour; colour c is order[b][start[b][c] .. start[b][c + 1]). */
+    final int[][] order, start;
 
-    private Colouring(Constraint[] ordered, int[] start) {
-        this.ordered = ordered;
+    private Colouring(List<ConstraintBlock> blocks, int colours, int[][] order, int[][] start) {
+        this.blocks = blocks;
+        this.colours = colours;
+        this.order = order;
         this.start = start;
     }
 
-    int colours() { return start.length - 1; }
-
-    static Colouring of(Constraint[] cs, int particleCount) {
+    static Colouring of(List<ConstraintBlock> blocks, int particleCount) {
         // usedBy[p] lists the colours already used by constraints on particle p, as a growable bit set.
         long[][] usedBy = new long[particleCount][];
-        int[] colourOf = new int[cs.length];
+        int[][] colourOf = new int[blocks.size()][];
         int colours = 0;
-        for (int i = 0; i < cs.length; i++) {
-            int[] ps = cs[i].particles();
-            int c = 0;
-            search:
-            while (true) {
-                for (int p : ps) if (isSet(usedBy[p], c)) { c++; continue search; }
-                break;
+        for (int b = 0; b < blocks.size(); b++) {
+            ConstraintBlock block = blocks.get(b);
+            colourOf[b] = new int[block.count()];
+            for (int i = 0; i < block.count(); i++) {
+                int c = 0;
+                search:
+                while (true) {
+                    for (int k = 0; k < block.arity(); k++) if (isSet(usedBy[block.particle(i, k)], c)) { c++; continue search; }
+                    break;
+                }
+                for (int k = 0; k < block.arity(); k++) {
+                    int p = block.particle(i, k);
+                    usedBy[p] = set(usedBy[p], c);
+                }
+                colourOf[b][i] = c;
+                colours = Math.max(colours, c + 1);
             }
-            for (int p : ps) usedBy[p] = set(usedBy[p], c);
-            colourOf[i] = c;
-            colours = Math.max(colours, c + 1);
         }
-        int[] start = new int[colours + 1];
-        for (int c : colourOf) start[c + 1]++;
-        for (int c = 0; c < colours; c++) start[c + 1] += start[c];
-        int[] fill = start.clone();
-        Constraint[] ordered = new Constraint[cs.length];
-        for (int i = 0; i < cs.length; i++) ordered[fill[colourOf[i]]++] = cs[i];
-        return new Colouring(ordered, start);
-    }
-
-    /** Concatenates colourings of consecutive groups (body, attachments, contacts): groups stay in turn. */
-    static Colouring concat(List<Colouring> parts) {
-        int n = 0, colours = 0;
-        for (Colouring p : parts) { n += p.ordered.length; colours += p.colours(); }
-        Constraint[] ordered = new Constraint[n];
-        int[] start = new int[colours + 1];
-        int k = 0, c = 0;
-        for (Colouring p : parts) {
-            for (int j = 0; j < p.colours(); j++) start[c + j + 1] = k + p.start[j + 1];
-            System.arraycopy(p.ordered, 0, ordered, k, p.ordered.length);
-            k += p.ordered.length;
-            c += p.colours();
+        int[][] order = new int[blocks.size()][], start = new int[blocks.size()][];
+        for (int b = 0; b < blocks.size(); b++) {
+            int[] s = new int[colours + 1];
+            for (int c : colourOf[b]) s[c + 1]++;
+            for (int c = 0; c < colours; c++) s[c + 1] += s[c];
+            int[] fill = s.clone(), o = new int[colourOf[b].length];
+            for (int i = 0; i < o.length; i++) o[fill[colourOf[b][i]]++] = i;
+            order[b] = o;
+            start[b] = s;
         }
-        return new Colouring(ordered, start);
+        return new Colouring(List.copyOf(blocks), colours, order, start);
     }
 
     private static boolean isSet(long[] bits, int c) {

@@ -1,11 +1,11 @@
 package xpbdcloth.engine;
 
 /**
- * A scalar constraint C(x) = 0 (or C(x) ≥ 0 for contacts) on a few particles, with both projections in
- * one place so a whole simulation can switch formulation while it runs.
+ * A scalar constraint C(x) = 0 on a few particles, with both projections in one place so a whole
+ * simulation can switch formulation while it runs.
  *
  * <p>For a constraint with gradients ∇ᵢC and inverse masses wᵢ, one projection moves each particle by
- * Δxᵢ = wᵢ ∇ᵢC Δλ, where
+ * Δxᵢ = wᵢ ∇ᵢC Δλ, where ({@link #deltaLambda})
  * <ul>
  *   <li>PBD (Müller et al. 2007, eq. 5): Δλ = −k'·C / Σ wᵢ|∇ᵢC|², with k' = 1 − (1 − k)^(1/n) for n
  *       sweeps, so that n sweeps of one isolated constraint remove the fraction k of its error (or the raw
@@ -15,107 +15,90 @@ package xpbdcloth.engine;
  *       substep times h, so the force it applies is λ/h².</li>
  * </ul>
  * Limiting cases: α → 0 gives PBD with k = 1 (a hard constraint); α → ∞ gives Δλ → 0 (no constraint).
- * Subclasses compute C and its gradient inline and call {@link #deltaLambda}.
+ *
+ * <p>An object of this class is a view of one entry of a {@link ConstraintBlock}, where the data lives
+ * in flat arrays and the solvers work. A constraint made with a public constructor starts in a block of
+ * its own; {@link Simulation#add(Constraint)} moves it into the simulation's, and the view follows.
  */
 public abstract class Constraint {
-    private final ConstraintFamily family;
-    /** PBD stiffness k ∈ [0, 1], dimensionless. */
-    private double stiffness = 1.0;
-    /** XPBD compliance α ≥ 0, m/N (the inverse of stiffness). */
-    private double compliance = 0.0;
-    /** XPBD Lagrange multiplier accumulated over the current substep. */
-    protected double lambda;
+    ConstraintBlock block;
+    int index;
 
-    private double stiffnessPerSweep = 1.0;
-    private long preparedRevision = -1;
-
-    protected Constraint(ConstraintFamily family) {
-        if (family == null) throw new IllegalArgumentException("family must not be null, was null");
-        this.family = family;
+    Constraint(ConstraintBlock block, int index) {
+        this.block = block;
+        this.index = index;
     }
 
-    public final ConstraintFamily family() { return family; }
-    public final double stiffness() { return stiffness; }
-    public final double compliance() { return compliance; }
+    /**
+     * Δλ for an equality constraint with value C, Σ wᵢ|∇ᵢC|² = {@code wGradSq} and the λ accumulated so
+     * far, in the context's mode (compliance α for XPBD, k' for PBD). 0 when nothing can move (all
+     * particles pinned and α = 0). The one place where the two formulations differ.
+     */
+    static double deltaLambda(double C, double wGradSq, double lambda, double compliance, double stiffnessPerSweep, SolverContext ctx) {
+        if (ctx.mode == ConstraintMode.XPBD) {
+            double alphaTilde = compliance * ctx.inverseH2;
+            double denominator = wGradSq + alphaTilde;
+            if (denominator <= 0) return 0;
+            return (-C - alphaTilde * lambda) / denominator;
+        }
+        if (wGradSq <= 0) return 0;
+        return -stiffnessPerSweep * C / wGradSq;
+    }
+
+    /**
+     * Δλ for a hard constraint (k = 1, α = 0, the same in both modes), for the transient contacts,
+     * which accumulate no λ. 0 when nothing can move.
+     */
+    static double hardDeltaLambda(double C, double wGradSq) {
+        return wGradSq <= 0 ? 0 : -C / wGradSq;
+    }
+
+    public final ConstraintFamily family() { return block.family(); }
+    /** PBD stiffness k ∈ [0, 1], dimensionless. */
+    public final double stiffness() { return block.stiffness(index); }
+    /** XPBD compliance α ≥ 0, m/N (the inverse of stiffness). */
+    public final double compliance() { return block.compliance(index); }
 
     /** PBD stiffness k ∈ [0, 1]. */
-    public final void setStiffness(double k) {
-        stiffness = Check.inRange("stiffness", k, 0, 1);
-        preparedRevision = -1;
-    }
+    public final void setStiffness(double k) { block.setStiffness(index, k); }
 
     /** XPBD compliance α ≥ 0 in m/N. */
-    public final void setCompliance(double alpha) {
-        compliance = Check.inRange("compliance", alpha, 0, EngineRange.MAX_COMPLIANCE);
-    }
+    public final void setCompliance(double alpha) { block.setCompliance(index, alpha); }
 
     /** The λ accumulated so far in this substep (XPBD; in PBD mode, the sum of the Δλ applied). */
-    public final double lambda() { return lambda; }
+    public final double lambda() { return block.lambda[index]; }
 
     /** The force magnitude this constraint applied over the last substep of length h: |λ| / h² (N). */
-    public final double force(double h) { return Math.abs(lambda) / (h * h); }
+    public final double force(double h) { return Math.abs(lambda()) / (h * h); }
+
+    /** k' for the current iteration count (or k without Müller's correction). */
+    public final double stiffnessPerSweep() { return block.stiffnessPerSweep(index); }
 
     /** The particles this constraint acts on, in the order {@link #gradient} reports them. */
-    public abstract int[] particles();
+    public final int[] particles() {
+        int[] ps = new int[block.arity()];
+        for (int k = 0; k < ps.length; k++) ps[k] = block.particle(index, k);
+        return ps;
+    }
 
     /** C(x) at the current positions. */
-    public abstract double evaluate(Particles p);
+    public final double evaluate(Particles p) { return block.evaluate(index, p); }
 
     /**
      * ∇C at the current positions, three components per particle of {@link #particles()}, written into
      * {@code out}. Where C has no gradient (a degenerate configuration) writes zeros.
      */
-    public abstract void gradient(Particles p, double[] out);
+    public final void gradient(Particles p, double[] out) { block.gradient(index, p, out); }
 
-    /** One projection of this constraint in the current mode. */
-    protected abstract void project(Particles p, SolverContext ctx);
+    /** One projection of this constraint in the context's mode. */
+    final void project(Particles p, SolverContext ctx) { block.project(index, p, ctx); }
 
-    /** Called once per substep before the sweeps: resets λ and refreshes k' if n or k changed. */
-    void beginSubstep(SolverContext ctx) {
-        lambda = 0;
-        if (preparedRevision != ctx.revision) {
-            stiffnessPerSweep = ctx.mullerCorrection && ctx.iterations > 1
-                    ? 1.0 - Math.pow(1.0 - stiffness, 1.0 / ctx.iterations)
-                    : stiffness;
-            preparedRevision = ctx.revision;
-        }
+    /** Resets the λ of this constraint's whole block and refreshes its k' (tests of a lone constraint). */
+    final void beginSubstep(SolverContext ctx) { block.beginSubstep(ctx); }
+
+    @Override public final boolean equals(Object o) {
+        return o instanceof Constraint && ((Constraint) o).block == block && ((Constraint) o).index == index;
     }
 
-    /** k' for the current iteration count (or k without Müller's correction). */
-    public final double stiffnessPerSweep() { return stiffnessPerSweep; }
-
-    /**
-     * Δλ for an equality constraint with value C and Σ wᵢ|∇ᵢC|² = {@code wGradSq}, accumulated into λ.
-     * Returns 0 when nothing can move (all particles pinned and α = 0).
-     */
-    protected final double deltaLambda(double C, double wGradSq, SolverContext ctx) {
-        double dLambda;
-        if (ctx.mode == ConstraintMode.XPBD) {
-            double alphaTilde = compliance * ctx.inverseH2;
-            double denominator = wGradSq + alphaTilde;
-            if (denominator <= 0) return 0;
-            dLambda = (-C - alphaTilde * lambda) / denominator;
-        } else {
-            if (wGradSq <= 0) return 0;
-            dLambda = -stiffnessPerSweep * C / wGradSq;
-        }
-        lambda += dLambda;
-        return dLambda;
-    }
-
-    /**
-     * Takes back the part (1 − scale) of a Δλ just returned by {@link #deltaLambda}, for a constraint
-     * that shortens its own step (a trust region) and still wants λ to be the sum of what it applied.
-     */
-    protected final void shortenLastStep(double dLambda, double scale) {
-        lambda -= dLambda * (1 - scale);
-    }
-
-    /**
-     * Δλ for a hard constraint (k = 1, α = 0, the same in both modes); static, because transient contacts
-     * have no constraint object to accumulate it in. 0 when nothing can move.
-     */
-    static double hardDeltaLambda(double C, double wGradSq) {
-        return wGradSq <= 0 ? 0 : -C / wGradSq;
-    }
+    @Override public final int hashCode() { return 31 * System.identityHashCode(block) + index; }
 }

@@ -185,7 +185,7 @@ final class GlobalSolver {
             for (int k = 0; k < x.length; k++) x[k] = start[k] + s * move[k];
             double merit = meritAt(particles, s);
             if (merit <= merit0 + 2 * ARMIJO * s * slope) {
-                for (int i = 0; i < m; i++) cs[i].lambda += s * dl[i];
+                for (int i = 0; i < m; i++) cs[i].block.lambda[cs[i].index] += s * dl[i];
                 return;
             }
         }
@@ -197,7 +197,7 @@ final class GlobalSolver {
     private double meritAt(Particles particles, double s) {
         double sum = 0;
         for (int i = 0; i < m; i++) {
-            double f = cs[i].evaluate(particles) + alphaTilde[i] * (cs[i].lambda + s * dl[i]);
+            double f = cs[i].evaluate(particles) + alphaTilde[i] * (cs[i].lambda() + s * dl[i]);
             sum += f * f;
         }
         return sum;
@@ -211,7 +211,7 @@ final class GlobalSolver {
             con.gradient(particles, scratch);
             int n = 3 * (entryStart[i + 1] - entryStart[i]);
             System.arraycopy(scratch, 0, grad, 3 * entryStart[i], n);
-            b[i] = -c[i] - alphaTilde[i] * con.lambda;
+            b[i] = -c[i] - alphaTilde[i] * con.lambda();
         }
         Arrays.fill(a.val, 0);
         final double[] w = particles.w;

@@ -100,25 +100,26 @@ public final class MeshClothBuilder {
         for (int i : pins) p.pin(i);
 
         MeshTopology topology = MeshTopology.of(mesh);
-        List<Constraint> cs = new ArrayList<>();
+        List<ConstraintBlock> blocks = new ArrayList<>();
         double[] structural = families.get(ConstraintFamily.STRUCTURAL);
         if (structural != null) {
             int[] e = topology.edges();
-            for (int k = 0; k < e.length; k += 2) cs.add(tuned(DistanceConstraint.between(p, e[k], e[k + 1]), structural));
+            DistanceBlock b = tuned(new DistanceBlock(ConstraintFamily.STRUCTURAL, e.length / 2), structural, blocks);
+            for (int k = 0; k < e.length; k += 2) b.addAtCurrentLength(p, e[k], e[k + 1]);
         }
         double[] shear = families.get(ConstraintFamily.SHEAR);
         if (shear != null) {
             int[] c = topology.corners();
-            for (int k = 0; k < c.length; k += 3)
-                cs.add(tuned(ShearConstraint.atCurrentAngle(ConstraintFamily.SHEAR, p, c[k], c[k + 1], c[k + 2]), shear));
+            ShearBlock b = tuned(new ShearBlock(ConstraintFamily.SHEAR, c.length / 3), shear, blocks);
+            for (int k = 0; k < c.length; k += 3) b.addAtCurrentAngle(p, c[k], c[k + 1], c[k + 2]);
         }
         double[] bend = families.get(ConstraintFamily.BEND);
         if (bend != null) {
             int[] r = topology.straightRuns();
-            for (int k = 0; k < r.length; k += 3)
-                cs.add(tuned(BendConstraint.atCurrentShape(ConstraintFamily.BEND, p, r[k], r[k + 1], r[k + 2]), bend));
+            BendBlock b = tuned(new BendBlock(ConstraintFamily.BEND, r.length / 3), bend, blocks);
+            for (int k = 0; k < r.length; k += 3) b.addAtCurrentShape(p, r[k], r[k + 1], r[k + 2]);
         }
-        return new Cloth(p, mesh, gridColumns, gridRows, cs);
+        return new Cloth(p, mesh, gridColumns, gridRows, blocks);
     }
 
     /** Face area shared equally by each face's corners; a polyline's length by each segment's ends. */
@@ -155,9 +156,11 @@ public final class MeshClothBuilder {
         return m;
     }
 
-    private static Constraint tuned(Constraint c, double[] kAlpha) {
-        c.setStiffness(kAlpha[0]);
-        c.setCompliance(kAlpha[1]);
-        return c;
+    /** The block, given the family's k and α and added to the list. */
+    private static <B extends ConstraintBlock> B tuned(B block, double[] kAlpha, List<ConstraintBlock> blocks) {
+        block.setStiffness(kAlpha[0]);
+        block.setCompliance(kAlpha[1]);
+        blocks.add(block);
+        return block;
     }
 }

@@ -30,11 +30,15 @@ public final class Metrics {
     public static double elasticEnergy(Simulation sim) {
         double e = 0;
         Particles p = sim.particles();
-        for (Constraint c : sim.constraints()) {
-            ConstraintFamily f = c.family();
-            if (f == ConstraintFamily.COLLISION || f == ConstraintFamily.ATTACHMENT || c.compliance() == 0) continue;
-            double C = c.evaluate(p);
-            e += C * C / (2 * c.compliance());
+        for (int k = 0; k < sim.blocks().size(); k++) {
+            ConstraintBlock b = sim.blocks().get(k);
+            ConstraintFamily f = b.family();
+            if (f == ConstraintFamily.COLLISION || f == ConstraintFamily.ATTACHMENT) continue;
+            for (int i = 0; i < b.count(); i++) {
+                if (b.compliance(i) == 0) continue;
+                double C = b.evaluate(i, p);
+                e += C * C / (2 * b.compliance(i));
+            }
         }
         return e;
     }
@@ -49,9 +53,11 @@ public final class Metrics {
     /** The largest |strain| over distance constraints of a family (0 if none). */
     public static double maxStrain(Simulation sim, ConstraintFamily family) {
         double max = 0;
-        for (Constraint c : sim.constraints())
-            if (c instanceof DistanceConstraint && c.family() == family)
-                max = Math.max(max, Math.abs(((DistanceConstraint) c).strain(sim.particles())));
+        for (int k = 0; k < sim.blocks().size(); k++) {
+            ConstraintBlock b = sim.blocks().get(k);
+            if (b instanceof DistanceBlock && b.family() == family)
+                for (int i = 0; i < b.count(); i++) max = Math.max(max, Math.abs(((DistanceBlock) b).strain(i, sim.particles())));
+        }
         return max;
     }
 
@@ -59,12 +65,26 @@ public final class Metrics {
     public static double meanStrain(Simulation sim, ConstraintFamily family) {
         double sum = 0;
         int n = 0;
-        for (Constraint c : sim.constraints())
-            if (c instanceof DistanceConstraint && c.family() == family) {
-                sum += ((DistanceConstraint) c).strain(sim.particles());
-                n++;
-            }
+        for (int k = 0; k < sim.blocks().size(); k++) {
+            ConstraintBlock b = sim.blocks().get(k);
+            if (b instanceof DistanceBlock && b.family() == family)
+                for (int i = 0; i < b.count(); i++) {
+                    sum += ((DistanceBlock) b).strain(i, sim.particles());
+                    n++;
+                }
+        }
         return n == 0 ? 0 : sum / n;
+    }
+
+    /** The largest |λ|/h² over a family's constraints in the last substep: the force its most loaded one carries (N). */
+    public static double maxForce(Simulation sim, ConstraintFamily family) {
+        double h = sim.settings().timestep() / sim.settings().substeps(), max = 0;
+        for (int k = 0; k < sim.blocks().size(); k++) {
+            ConstraintBlock b = sim.blocks().get(k);
+            if (b.family() == family)
+                for (int i = 0; i < b.count(); i++) max = Math.max(max, Math.abs(b.lambda[i]) / (h * h));
+        }
+        return max;
     }
 
     /** True when every position and velocity is finite. */

@@ -7,14 +7,14 @@ package xpbdcloth.engine;
  * only when nobody listens to single sweeps (the team runs all of a substep's sweeps in one go).
  */
 final class ParallelColouredSweeps implements SolveStage {
-    private final Colouring colouring;
+    private final SweepOrder colouring;
     private final ParallelSweeps team;
     private final Particles particles;
     private final SolverContext ctx;
     private final ContactSet contacts;
     private final SequentialSweeps sameResult;
 
-    ParallelColouredSweeps(Colouring colouring, ParallelSweeps team, Particles particles, SolverContext ctx, ContactSet contacts, SequentialSweeps sameResult) {
+    ParallelColouredSweeps(SweepOrder colouring, ParallelSweeps team, Particles particles, SolverContext ctx, ContactSet contacts, SequentialSweeps sameResult) {
         this.colouring = colouring;
         this.team = team;
         this.particles = particles;

@@ -4,9 +4,9 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.locks.LockSupport;
 
 /**
- * Runs the sweeps of one substep over a coloured constraint order on several threads: each colour is
- * split into equal contiguous chunks, one per thread, and all threads meet at a barrier before the next
- * colour. Constraints of one colour share no particles, so the result does not depend on timing or on
+ * Runs the sweeps of one substep over a coloured constraint order on several threads: each colour's
+ * part of every block is split into equal contiguous chunks, one per thread, and all threads meet at a
+ * barrier before the next colour. Constraints of one colour share no particles, so the result does not depend on timing or on
  * the thread count. Helper threads are made once and reused; between substeps they spin briefly and
  * then park, and the barrier is a counter, so a step allocates nothing.
  */
@@ -19,7 +19,7 @@ final class ParallelSweeps {
     private volatile boolean shutdown;
 
     // The job, published before jobGeneration is bumped.
-    private Colouring colouring;
+    private SweepOrder colouring;
     private Particles particles;
     private SolverContext ctx;
     private int iterations;
@@ -40,7 +40,7 @@ final class ParallelSweeps {
     int threads() { return threads; }
 
     /** n sweeps over the coloured order, each followed by the contacts, this thread taking chunk 0. */
-    void sweep(Colouring c, Particles p, SolverContext context, int n, ContactSet contactSet) {
+    void sweep(SweepOrder c, Particles p, SolverContext context, int n, ContactSet contactSet) {
         colouring = c;
         particles = p;
         ctx = context;
@@ -66,18 +66,16 @@ final class ParallelSweeps {
     }
 
     private void work(int id) {
-        final Colouring c = colouring;
+        final SweepOrder c = colouring;
         final Particles p = particles;
         final SolverContext context = ctx;
-        final Constraint[] cs = c.ordered;
-        final int colours = c.colours();
+        final int colours = c.phases();
         final ContactSet touching = contacts;
         final boolean anyContact = touching.count() > 0;
         for (int it = 0; it < iterations; it++) {
             for (int k = 0; k < colours; k++) {
-                int from = c.start[k], size = c.start[k + 1] - from;
-                int lo = from + (int) ((long) size * id / threads), hi = from + (int) ((long) size * (id + 1) / threads);
-                for (int i = lo; i < hi; i++) cs[i].project(p, context);
+                // Each thread takes its share of every block's part of the colour.
+                for (int s = c.phaseStart[k]; s < c.phaseStart[k + 1]; s++) c.project(s, id, threads, p, context);
                 await();
             }
             // Contacts are few and found per substep: the calling thread takes them, the others wait.

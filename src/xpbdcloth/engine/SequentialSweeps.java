@@ -5,14 +5,14 @@ package xpbdcloth.engine;
  * the coloured order, which gives the parallel solve's result), then the substep's contacts.
  */
 final class SequentialSweeps implements SolveStage {
-    private final Constraint[] order;
+    private final SweepOrder order;
     private final Particles particles;
     private final SolverContext ctx;
     private final ContactSet contacts;
     private final Simulation sim;
     private final SweepListener listener;
 
-    SequentialSweeps(Constraint[] order, Particles particles, SolverContext ctx, ContactSet contacts, Simulation sim, SweepListener listener) {
+    SequentialSweeps(SweepOrder order, Particles particles, SolverContext ctx, ContactSet contacts, Simulation sim, SweepListener listener) {
         this.order = order;
         this.particles = particles;
         this.ctx = ctx;
@@ -30,16 +30,13 @@ final class SequentialSweeps implements SolveStage {
 
     /** One sweep: the constraints in order, then the contacts. */
     void sweep() {
-        for (Constraint c : order) c.project(particles, ctx);
+        order.sweep(particles, ctx);
         contacts.project(particles, ctx);
     }
 
     /** The same sweep, the state checked after every projection. */
     void sweep(StepProbe probe) {
-        for (Constraint c : order) {
-            c.project(particles, ctx);
-            probe.check(c);
-        }
+        order.sweep(particles, ctx, probe);
         for (int k = 0; k < contacts.count(); k++) {
             contacts.project(particles, ctx, k);
             probe.check(contacts.particle(k), ConstraintFamily.COLLISION);

@@ -27,8 +27,14 @@ import java.util.List;
 public final class Simulation {
     private final Particles particles;
     private final SolverSettings settings;
-    private final List<Constraint> body = new ArrayList<>();
-    private final List<AttachmentConstraint> attachments = new ArrayList<>();
+    /** The cloth constraints, block by block in Gauss–Seidel order. */
+    private final List<ConstraintBlock> body = new ArrayList<>();
+    private final List<ConstraintBlock> bodyView = java.util.Collections.unmodifiableList(body);
+    /** The last block made here for constraints added one by one (the only body block that grows). */
+    private ConstraintBlock openBlock;
+    private final AttachmentBlock attachments = new AttachmentBlock(4);
+    /** The views handed out by {@link #attach}, re-indexed when one is released. */
+    private final List<AttachmentConstraint> grabs = new ArrayList<>();
     private final List<Sphere> spheres = new ArrayList<>();
     private final ContactSet contacts = new ContactSet();
     private final List<Kinematics> kinematics = new ArrayList<>();
@@ -36,10 +42,12 @@ public final class Simulation {
     private final SolverContext ctx = new SolverContext();
     private final StepSnapshot snapshot;
     /** The solve order (cloth constraints, then attachments), rebuilt only when either set changes. */
-    private Constraint[] order = new Constraint[0];
-    /** The cloth constraints' coloured order, built on first use after they change (not when grabbing). */
+    private SweepOrder order = SweepOrder.asBuilt(List.of());
+    /** The cloth constraints' colouring, built on first use after they change (not when grabbing). */
     private Colouring bodyColouring;
-    private Colouring colouring;
+    private SweepOrder coloured;
+    /** {@link #constraints()}, made when first asked for after a change. */
+    private Constraint[] views;
     private ParallelSweeps parallel;
     /** The global solver for the cloth constraints, built on first use after they change (not when grabbing). */
     private GlobalSolver global;
@@ -57,6 +65,7 @@ public final class Simulation {
         this.particles = particles;
         this.settings = settings;
         this.snapshot = new StepSnapshot(particles.count());
+        attachments.owner = this;
     }
 
     public Particles particles() { return particles; }
@@ -65,21 +74,93 @@ public final class Simulation {
     public long stepCount() { return stepCount; }
     public List<Sphere> spheres() { return java.util.Collections.unmodifiableList(spheres); }
 
-    /** The constraints in solve order (a live view; do not modify). */
-    public Constraint[] constraints() { return order; }
+    /**
+     * Views of the constraints in solve order (cloth constraints, then attachments), made when first
+     * asked for after the set changed; do not modify. The solvers work on {@link #blocks()}.
+     */
+    public Constraint[] constraints() {
+        if (views == null) {
+            Constraint[] cloth = bodyViews();
+            views = java.util.Arrays.copyOf(cloth, cloth.length + grabs.size());
+            for (int k = 0; k < grabs.size(); k++) views[cloth.length + k] = grabs.get(k);
+        }
+        return views;
+    }
 
-    /** Adds a constraint on particles that exist. */
+    /** The number of constraints, attachments included. */
+    public int constraintCount() {
+        int n = attachments.count();
+        for (ConstraintBlock b : body) n += b.count();
+        return n;
+    }
+
+    /** The cloth constraints' blocks in solve order (attachments not included); a live view. */
+    public List<ConstraintBlock> blocks() { return bodyView; }
+
+    /**
+     * Adds a constraint on particles that exist. Its data moves into this simulation's blocks and the
+     * object stays its view; a constraint already in a simulation is refused.
+     */
     public Simulation add(Constraint c) {
         if (c == null) throw new IllegalArgumentException("constraint must not be null, was null");
-        for (int i : c.particles()) Check.index("constraint particle", i, particles.count());
-        body.add(c);
+        checkAddable(c);
+        addOne(c);
         bodyChanged();
         return this;
     }
 
+    /** Adds constraints in order; all are checked before any is added. */
     public Simulation addAll(List<? extends Constraint> cs) {
-        for (Constraint c : cs) for (int i : c.particles()) Check.index("constraint particle", i, particles.count());
-        body.addAll(cs);
+        java.util.Set<Constraint> seen = new java.util.HashSet<>();
+        for (Constraint c : cs) {
+            if (c == null) throw new IllegalArgumentException("constraint must not be null, was null");
+            checkAddable(c);
+            if (!seen.add(c)) throw new IllegalArgumentException("constraint must be added once, was listed twice (" + c.family() + ")");
+        }
+        for (Constraint c : cs) addOne(c);
+        bodyChanged();
+        return this;
+    }
+
+    private void checkAddable(Constraint c) {
+        for (int i : c.particles()) Check.index("constraint particle", i, particles.count());
+        if (c.block.owner != null)
+            throw new IllegalArgumentException("constraint must not be in a simulation already, was a " + c.family() + " constraint of " + (c.block.owner == this ? "this one" : "another"));
+    }
+
+    private void addOne(Constraint c) {
+        ConstraintBlock last = body.isEmpty() ? null : body.get(body.size() - 1);
+        if (last == null || last != openBlock || last.getClass() != c.block.getClass() || last.family() != c.family()) {
+            openBlock = c.block.emptyLike(16);
+            openBlock.owner = this;
+            body.add(openBlock);
+        }
+        int j = openBlock.appendCopy(c.block, c.index);
+        c.block = openBlock;
+        c.index = j;
+    }
+
+    /** Adds a whole block of constraints after those already added, taking it over (or a copy, if another simulation has it). */
+    public Simulation add(ConstraintBlock block) {
+        if (block == null) throw new IllegalArgumentException("block must not be null, was null");
+        return addBlocks(List.of(block));
+    }
+
+    /** Adds whole blocks (a cloth's), taking them over, or copies of them if another simulation has them. */
+    Simulation addBlocks(List<ConstraintBlock> blocks) {
+        for (ConstraintBlock b : blocks)
+            for (int i = 0; i < b.count(); i++)
+                for (int k = 0; k < b.arity(); k++) Check.index("constraint particle", b.particle(i, k), particles.count());
+        for (ConstraintBlock b : blocks) {
+            ConstraintBlock mine = b;
+            if (b.owner != null) {
+                mine = b.emptyLike(b.count());
+                for (int i = 0; i < b.count(); i++) mine.appendCopy(b, i);
+            }
+            mine.owner = this;
+            body.add(mine);
+        }
+        openBlock = null;
         bodyChanged();
         return this;
     }
@@ -113,26 +194,37 @@ public final class Simulation {
     /** Holds particle i at (x, y, z) until {@link #release}; returns the attachment to move its target. */
     public AttachmentConstraint attach(int i, double x, double y, double z) {
         Check.index("particle", i, particles.count());
-        AttachmentConstraint a = new AttachmentConstraint(i, x, y, z);
-        attachments.add(a);
+        AttachmentConstraint a = attachments.view(attachments.add(i, x, y, z));
+        grabs.add(a);
         attachmentsChanged();
         return a;
     }
 
+    /** Lets go of an attachment made by {@link #attach}; the object keeps its particle and target. */
     public void release(AttachmentConstraint a) {
-        if (attachments.remove(a)) attachmentsChanged();
+        int k = grabs.indexOf(a);
+        if (k < 0) return;
+        AttachmentBlock own = new AttachmentBlock(1);
+        own.appendCopy(attachments, a.index);
+        attachments.remove(a.index);
+        grabs.remove(k);
+        for (int j = k; j < grabs.size(); j++) grabs.get(j).index--;
+        a.block = own;
+        a.index = 0;
+        attachmentsChanged();
     }
 
     /** Sets PBD stiffness k for every constraint of a family. */
     public void setStiffness(ConstraintFamily family, double k) {
         Check.inRange("stiffness", k, 0, 1);
-        for (Constraint c : body) if (c.family() == family) c.setStiffness(k);
+        for (ConstraintBlock b : body) if (b.family() == family) b.setStiffness(k);
     }
 
     /** Sets XPBD compliance α (m/N) for every constraint of a family. */
     public void setCompliance(ConstraintFamily family, double alpha) {
         Check.nonNegative("compliance", alpha);
-        for (Constraint c : body) if (c.family() == family) c.setCompliance(alpha);
+        Check.inRange("compliance", alpha, 0, EngineRange.MAX_COMPLIANCE);
+        for (ConstraintBlock b : body) if (b.family() == family) b.setCompliance(alpha);
     }
 
     private void bodyChanged() {
@@ -143,25 +235,24 @@ public final class Simulation {
 
     /** Grabbing and releasing land here: the order and stage are remade, the global solver is kept. */
     private void attachmentsChanged() {
-        Constraint[] next = new Constraint[body.size() + attachments.size()];
-        int n = 0;
-        for (Constraint c : body) next[n++] = c;
-        for (Constraint c : attachments) next[n++] = c;
-        order = next;
-        colouring = null;
+        List<ConstraintBlock> all = new ArrayList<>(body);
+        all.add(attachments);
+        order = SweepOrder.asBuilt(all);
+        coloured = null;
         solve = null;
+        views = null;
     }
 
-    private Colouring colouring() {
-        if (colouring == null) {
-            if (bodyColouring == null) bodyColouring = Colouring.of(body.toArray(new Constraint[0]), particles.count());
-            colouring = Colouring.concat(List.of(bodyColouring, Colouring.of(attachments.toArray(new Constraint[0]), particles.count())));
+    private SweepOrder colouring() {
+        if (coloured == null) {
+            if (bodyColouring == null) bodyColouring = Colouring.of(body, particles.count());
+            coloured = SweepOrder.coloured(List.of(bodyColouring, Colouring.of(List.of(attachments), particles.count())));
         }
-        return colouring;
+        return coloured;
     }
 
     /** Number of colours of the coloured order (built if needed): the barriers per sweep when parallel. */
-    public int colourCount() { return colouring().colours(); }
+    public int colourCount() { return colouring().phases(); }
 
     /** The global solver in use (for tests: that grabbing keeps it), or null. */
     GlobalSolver globalSolverInUse() { return global; }
@@ -199,7 +290,8 @@ public final class Simulation {
             observer.after(Stage.KINEMATICS);
             contacts.collide(particles, spheres);
             observer.after(Stage.COLLIDE);
-            for (Constraint c : order) c.beginSubstep(ctx);
+            for (int b = 0, nb = body.size(); b < nb; b++) body.get(b).beginSubstep(ctx);
+            attachments.beginSubstep(ctx);
             sweepListener.afterSweep(this, s, -1);
             solveStage.solve(s, iterations);
             observer.after(Stage.SOLVE);
@@ -227,13 +319,13 @@ public final class Simulation {
         GlobalSolver g = type == SolverType.GAUSS_SEIDEL ? null : globalSolver(); // remade if the PCG settings changed
         if (solve != null && solvedFor.matches(type, coloured, threads, sweepListener, g)) return solve;
         if (type != SolverType.GAUSS_SEIDEL) {
-            SequentialSweeps rest = new SequentialSweeps(attachments.toArray(new Constraint[0]), particles, ctx, contacts, this, sweepListener);
+            SequentialSweeps rest = new SequentialSweeps(SweepOrder.asBuilt(List.of(attachments)), particles, ctx, contacts, this, sweepListener);
             solve = new GlobalIterations(g, rest, particles, ctx, this, sweepListener);
         } else if (!coloured) {
             solve = new SequentialSweeps(order, particles, ctx, contacts, this, sweepListener);
         } else {
-            Colouring col = colouring();
-            SequentialSweeps sequential = new SequentialSweeps(col.ordered, particles, ctx, contacts, this, sweepListener);
+            SweepOrder col = colouring();
+            SequentialSweeps sequential = new SequentialSweeps(col, particles, ctx, contacts, this, sweepListener);
             // The team runs a substep's sweeps in one go, so a listener to single sweeps gets the sequential one.
             ParallelSweeps team = sweepListener == NO_LISTENER ? parallelFor(threads) : null;
             solve = team == null ? sequential : new ParallelColouredSweeps(col, team, particles, ctx, contacts, sequential);
@@ -282,8 +374,14 @@ public final class Simulation {
     private GlobalSolver globalSolver() {
         boolean mg = settings.solver() == SolverType.MULTIGRID_PCG;
         if (global == null || global.multigrid() != mg || global.tolerance() != settings.pcgTolerance() || global.maxIterations() != settings.pcgMaxIterations())
-            global = new GlobalSolver(body.toArray(new Constraint[0]), particles.count(), mg, settings.pcgTolerance(), settings.pcgMaxIterations());
+            global = new GlobalSolver(bodyViews(), particles.count(), mg, settings.pcgTolerance(), settings.pcgMaxIterations());
         return global;
+    }
+
+    private Constraint[] bodyViews() {
+        List<Constraint> v = new ArrayList<>();
+        for (ConstraintBlock b : body) for (int i = 0; i < b.count(); i++) v.add(b.view(i));
+        return v.toArray(new Constraint[0]);
     }
 
     /** Conjugate-gradient iterations of the last global iteration (0 with Gauss–Seidel). */
@@ -353,11 +451,13 @@ public final class Simulation {
         double sum = 0;
         double inverseH2 = ctx.inverseH2;
         boolean xpbd = settings.mode() == ConstraintMode.XPBD;
-        for (Constraint c : order) {
-            ConstraintFamily f = c.family();
+        for (ConstraintBlock b : body) {
+            ConstraintFamily f = b.family();
             if (f == ConstraintFamily.COLLISION || f == ConstraintFamily.ATTACHMENT) continue;
-            double r = c.evaluate(particles) + (xpbd ? c.compliance() * inverseH2 * c.lambda() : 0);
-            sum += r * r;
+            for (int i = 0; i < b.count(); i++) {
+                double r = b.evaluate(i, particles) + (xpbd ? b.compliance(i) * inverseH2 * b.lambda[i] : 0);
+                sum += r * r;
+            }
         }
         return Math.sqrt(sum);
     }

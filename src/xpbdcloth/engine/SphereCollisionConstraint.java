@@ -20,43 +20,43 @@ package xpbdcloth.engine;
  * choice so the result is deterministic.
  *
  * <p>A simulation does not keep one of these per particle and sphere: its contacts are found anew each
- * substep ({@link ContactSet}) and projected by the same {@link #project(Particles, int, Sphere, double)}.
- * This class remains for looking at one contact (its C, its gradient) and for tests.
+ * substep ({@link ContactSet}, the flat store of this family, which accumulates no λ: a hard inequality
+ * needs none) and projected by the same {@link #project(Particles, int, Sphere, double)}. An object of
+ * this class is one contact to look at (its C, its gradient), not a {@link Constraint}: it has no
+ * stiffness or compliance to set.
  */
-public final class SphereCollisionConstraint extends Constraint {
+public final class SphereCollisionConstraint {
     final int i;
     final Sphere sphere;
 
     public SphereCollisionConstraint(int particle, Sphere sphere) {
-        super(ConstraintFamily.COLLISION);
         if (sphere == null) throw new IllegalArgumentException("sphere must not be null, was null");
         this.i = Check.atLeast("particle", particle, 0);
         this.sphere = sphere;
     }
 
     public Sphere sphere() { return sphere; }
+    public ConstraintFamily family() { return ConstraintFamily.COLLISION; }
 
-    @Override public int[] particles() { return new int[] {i}; }
+    public int[] particles() { return new int[] {i}; }
 
-    @Override public double evaluate(Particles p) {
+    /** C(x) = |x − c| − (r + m), negative inside. */
+    public double evaluate(Particles p) {
         double dx = p.x[3 * i] - sphere.cx, dy = p.x[3 * i + 1] - sphere.cy, dz = p.x[3 * i + 2] - sphere.cz;
         return Math.sqrt(dx * dx + dy * dy + dz * dz) - (sphere.radius + sphere.margin);
     }
 
-    @Override public void gradient(Particles p, double[] out) {
+    /** ∇C = n (up, +y, at the centre). */
+    public void gradient(Particles p, double[] out) {
         double dx = p.x[3 * i] - sphere.cx, dy = p.x[3 * i + 1] - sphere.cy, dz = p.x[3 * i + 2] - sphere.cz;
         double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-        if (len < DistanceConstraint.MIN_LENGTH) { out[0] = 0; out[1] = 1; out[2] = 0; return; }
+        if (len < DistanceBlock.MIN_LENGTH) { out[0] = 0; out[1] = 1; out[2] = 0; return; }
         out[0] = dx / len; out[1] = dy / len; out[2] = dz / len;
     }
 
-    @Override protected void project(Particles p, SolverContext ctx) {
-        lambda += project(p, i, sphere, ctx.h);
-    }
-
     /**
-     * The contact's projection, written once: used by this class and by the transient contacts of
-     * {@link ContactSet}. Moves particle i out of the sphere and applies friction; returns the Δλ of the
+     * The contact's projection, written once, used by the transient contacts of {@link ContactSet}.
+     * Moves particle i out of the sphere and applies friction; returns the Δλ of the
      * normal correction (0 when not in contact).
      */
     static double project(Particles p, int i, Sphere s, double h) {
@@ -68,9 +68,9 @@ public final class SphereCollisionConstraint extends Constraint {
         double w = p.w[i];
         if (C >= 0 || w == 0) return 0;
         double nx, ny, nz;
-        if (len < DistanceConstraint.MIN_LENGTH) { nx = 0; ny = 1; nz = 0; }
+        if (len < DistanceBlock.MIN_LENGTH) { nx = 0; ny = 1; nz = 0; }
         else { nx = dx / len; ny = dy / len; nz = dz / len; }
-        double dLambda = hardDeltaLambda(C, w);
+        double dLambda = Constraint.hardDeltaLambda(C, w);
         double normalCorrection = w * dLambda; // = −C > 0
         x[k] += normalCorrection * nx; x[k + 1] += normalCorrection * ny; x[k + 2] += normalCorrection * nz;
 

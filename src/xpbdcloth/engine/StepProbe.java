@@ -23,8 +23,9 @@ final class StepProbe implements StepObserver {
         if (!finite) found(st, null);
     }
 
-    void check(Constraint c) {
-        for (int i : c.particles()) check(i, c.family());
+    /** After the projection of constraint i of a block. */
+    void check(ConstraintBlock block, int i) {
+        for (int k = 0; k < block.arity(); k++) check(block.particle(i, k), block.family());
     }
 
     /** After a projection that moved particle i, of the given family. */
@@ -35,7 +36,7 @@ final class StepProbe implements StepObserver {
 
     /** After a global iteration: the first body constraint on a non-finite particle names the family. */
     void check(GlobalSolver g) {
-        for (Constraint c : g.constraints()) check(c);
+        for (Constraint c : g.constraints()) check(c.block, c.index);
     }
 
     private void found(Stage st, ConstraintFamily f) {

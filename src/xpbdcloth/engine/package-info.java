@@ -2,16 +2,19 @@
  * The engine: plain Java, no Processing. SI units throughout (m, s, kg, N).
  * <ul>
  *   <li>{@link xpbdcloth.engine.Particles}, {@link xpbdcloth.engine.Particle}: particle state (flat arrays) and its object view.</li>
- *   <li>{@link xpbdcloth.engine.Constraint}: the base with both projections, PBD (k, Müller's k') and XPBD (α, λ).</li>
- *   <li>{@link xpbdcloth.engine.DistanceConstraint}: |x_a − x_b| − L (structural edges, rope links).</li>
- *   <li>{@link xpbdcloth.engine.ShearConstraint}: the angle between two edges at a vertex.</li>
- *   <li>{@link xpbdcloth.engine.BendConstraint}: Kelager's triangle bending (vertex to centroid distance).</li>
- *   <li>{@link xpbdcloth.engine.SphereCollisionConstraint}: sphere contact with Coulomb friction and ω × r (its
- *       projection is the one transient contacts use).</li>
- *   <li>{@link xpbdcloth.engine.AttachmentConstraint}: a particle held at a moving target (mouse grab).</li>
+ *   <li>{@link xpbdcloth.engine.Constraint}: both formulations in one place, PBD (k, Müller's k') and XPBD
+ *       (α, λ): Δλ; its objects are views of one constraint of a block.</li>
+ *   <li>{@link xpbdcloth.engine.ConstraintBlock}: one kind and family of constraints in flat arrays (indices,
+ *       rest values, λ, material); each kind's maths (C, ∇C, projection) written once, in its block, and
+ *       called by every solver: {@link xpbdcloth.engine.DistanceBlock} (|x_a − x_b| − L: structural edges,
+ *       rope links), {@link xpbdcloth.engine.ShearBlock} (the angle between two edges at a vertex),
+ *       {@link xpbdcloth.engine.BendBlock} (Kelager's triangle bending), {@link xpbdcloth.engine.AttachmentBlock}
+ *       (a particle held at a moving target: the mouse grab); the views {@code DistanceConstraint} and so on.</li>
+ *   <li>{@link xpbdcloth.engine.SphereCollisionConstraint}: sphere contact with Coulomb friction and ω × r (the
+ *       projection the transient contacts of {@code ContactSet} use).</li>
  *   <li>{@link xpbdcloth.engine.Simulation}: the step, stage by stage ({@link xpbdcloth.engine.Stage}): predict,
  *       kinematics, collide (transient contacts, {@code ContactSet}), solve ({@code SolveStage}: sequential,
- *       parallel coloured or global), update velocities.</li>
+ *       parallel coloured or global, over a {@code SweepOrder} of blocks), update velocities.</li>
  *   <li>{@link xpbdcloth.engine.SolverSettings}, {@link xpbdcloth.engine.ConstraintMode}: parameters and units.</li>
  *   <li>{@link xpbdcloth.engine.MeshClothBuilder}, {@link xpbdcloth.engine.ClothBuilder}, {@link xpbdcloth.engine.Cloth}:
  *       cloths from any mesh ({@code xpbdcloth.mesh}), grid cloths and ropes.</li>

@@ -3,8 +3,8 @@ package xpbdcloth.sketch;
 import processing.core.PConstants;
 import processing.core.PGraphics;
 import xpbdcloth.engine.Cloth;
-import xpbdcloth.engine.Constraint;
-import xpbdcloth.engine.DistanceConstraint;
+import xpbdcloth.engine.ConstraintBlock;
+import xpbdcloth.engine.DistanceBlock;
 import xpbdcloth.engine.Particles;
 import xpbdcloth.engine.Sphere;
 import xpbdcloth.mesh.VertexNormals;
@@ -131,14 +131,16 @@ final class ClothRenderer {
         double[] x = p.positions();
         g.strokeWeight(1.5f);
         g.beginShape(PConstants.LINES);
-        for (Constraint c : scene.simulation().constraints()) {
-            if (!(c instanceof DistanceConstraint)) continue;
-            DistanceConstraint d = (DistanceConstraint) c;
-            strainColour(d.strain(p), rgb);
-            g.stroke(rgb[0], rgb[1], rgb[2]);
-            int a = 3 * d.a(), b = 3 * d.b();
-            g.vertex((float) x[a], (float) x[a + 1], (float) x[a + 2]);
-            g.vertex((float) x[b], (float) x[b + 1], (float) x[b + 2]);
+        for (ConstraintBlock block : scene.simulation().blocks()) {
+            if (!(block instanceof DistanceBlock)) continue;
+            DistanceBlock d = (DistanceBlock) block;
+            for (int i = 0; i < d.count(); i++) {
+                strainColour(d.strain(i, p), rgb);
+                g.stroke(rgb[0], rgb[1], rgb[2]);
+                int a = 3 * d.a(i), b = 3 * d.b(i);
+                g.vertex((float) x[a], (float) x[a + 1], (float) x[a + 2]);
+                g.vertex((float) x[b], (float) x[b + 1], (float) x[b + 2]);
+            }
         }
         g.endShape();
     }

@@ -4,7 +4,6 @@ import java.util.List;
 import java.util.Locale;
 import processing.core.PConstants;
 import processing.core.PGraphics;
-import xpbdcloth.engine.Constraint;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.Metrics;
 import xpbdcloth.engine.Simulation;
@@ -32,13 +31,6 @@ final class Hud {
     }
 
     static String fmt(String f, Object... a) { return String.format(Locale.ROOT, f, a); }
-
-    /** The largest |λ|/h² over the structural constraints: the force the stiffest link carries (N). */
-    static double maxForce(Simulation sim) {
-        double h = sim.settings().timestep() / sim.settings().substeps(), max = 0;
-        for (Constraint c : sim.constraints()) if (c.family() == ConstraintFamily.STRUCTURAL) max = Math.max(max, c.force(h));
-        return max;
-    }
 
     /** The text lines, formatted a few times a second rather than every frame: formatting allocates. */
     private String[] lines = new String[0];
@@ -70,7 +62,7 @@ final class Hud {
         String famName = s.family() == null ? "all (showing " + fam.name().toLowerCase(Locale.ROOT) + ")" : fam.name().toLowerCase(Locale.ROOT);
         double kPrime = s.mullerCorrection() ? 1 - Math.pow(1 - km[0], 1.0 / s.iterations()) : km[0];
         int constraints = 0;
-        for (Scene sc : running) constraints += sc.simulation().constraints().length;
+        for (Scene sc : running) constraints += sc.simulation().constraintCount();
         String[] lines = {
                 s.preset().name + "  —  " + (s.sideBySide() ? "side by side: PBD | XPBD" : s.mode().toString()) + (s.paused ? "   [paused]" : ""),
                 fmt("iterations %d   substeps %d   dt 1/%.0f s (%.1f ms)", s.iterations(), s.substeps(), 1 / s.dt(), 1000 * s.dt()),
@@ -85,7 +77,7 @@ final class Hud {
                 fmt("particles %d   constraints %d", sim.particles().count() * running.size(), constraints),
                 (s.sideBySide() ? "strain: under each cloth" : fmt("strain mean %.2f %%  max %.2f %%",
                         100 * Metrics.meanStrain(sim, ConstraintFamily.STRUCTURAL), 100 * Metrics.maxStrain(sim, ConstraintFamily.STRUCTURAL)))
-                        + fmt("   KE %.2e J   max link force %.3f N%s", Metrics.kineticEnergy(sim.particles()), maxForce(sim), s.sideBySide() ? " (PBD)" : ""),
+                        + fmt("   KE %.2e J   max link force %.3f N%s", Metrics.kineticEnergy(sim.particles()), Metrics.maxForce(sim, ConstraintFamily.STRUCTURAL), s.sideBySide() ? " (PBD)" : ""),
                 s.windOn() ? fmt("wind %.1f m/s towards %.0f°", s.windSpeed(), Math.toDegrees(s.windAngle())) : "wind off",
                 s.showHelp ? "h: hide the keys" : "h: keys   q: quit",
         };

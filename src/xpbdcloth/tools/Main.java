@@ -169,7 +169,7 @@ public final class Main implements Callable<Integer> {
                 try {
                     xpbdcloth.scene.Scene scene = xpbdcloth.scene.Scene.of(PresetLoader.byNameOrPath(p));
                     spec.commandLine().getOut().printf("%s: ok (%d particles, %d constraints)%n", p,
-                            scene.cloth().particles().count(), scene.simulation().constraints().length);
+                            scene.cloth().particles().count(), scene.simulation().constraintCount());
                 } catch (IllegalArgumentException e) {
                     spec.commandLine().getOut().println(e.getMessage());
                     bad++;

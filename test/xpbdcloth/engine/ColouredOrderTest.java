@@ -12,14 +12,19 @@ class ColouredOrderTest {
     @Test
     void noTwoConstraintsOfAColourShareAParticle() {
         Simulation sim = Rigs.clothWithSphere(false);
-        Colouring c = Colouring.of(sim.constraints(), sim.particles().count());
-        assertEquals(sim.constraints().length, c.ordered.length);
-        for (int k = 0; k < c.colours(); k++) {
+        Colouring c = Colouring.of(sim.blocks(), sim.particles().count());
+        int coloured = 0;
+        for (int k = 0; k < c.colours; k++) {
             Set<Integer> seen = new HashSet<>();
-            for (int i = c.start[k]; i < c.start[k + 1]; i++)
-                for (int p : c.ordered[i].particles()) assertTrue(seen.add(p), "colour " + k + " shares particle " + p);
+            for (int b = 0; b < c.blocks.size(); b++)
+                for (int j = c.start[b][k]; j < c.start[b][k + 1]; j++, coloured++)
+                    for (int a = 0; a < c.blocks.get(b).arity(); a++) {
+                        int p = c.blocks.get(b).particle(c.order[b][j], a);
+                        assertTrue(seen.add(p), "colour " + k + " shares particle " + p);
+                    }
         }
-        System.out.printf("32x32 cloth and a sphere: %d constraints in %d colours%n", c.ordered.length, c.colours());
+        assertEquals(sim.constraints().length, coloured, "every constraint has a colour");
+        System.out.printf("32x32 cloth and a sphere: %d constraints in %d colours%n", coloured, c.colours);
     }
 
     /** Within a colour nothing interacts, so 2 and 3 threads give the very bits of 1 thread. */

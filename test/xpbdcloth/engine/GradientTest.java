@@ -17,9 +17,17 @@ class GradientTest {
     }
 
     static void assertGradientMatchesDifferences(Constraint c, Particles p) {
-        int[] ids = c.particles();
+        assertGradientMatchesDifferences(c.getClass().getSimpleName(), c.particles(), c::evaluate, c::gradient, p);
+    }
+
+    static void assertGradientMatchesDifferences(SphereCollisionConstraint c, Particles p) {
+        assertGradientMatchesDifferences("SphereCollisionConstraint", c.particles(), c::evaluate, c::gradient, p);
+    }
+
+    static void assertGradientMatchesDifferences(String name, int[] ids, java.util.function.ToDoubleFunction<Particles> value,
+            java.util.function.BiConsumer<Particles, double[]> gradient, Particles p) {
         double[] g = new double[3 * ids.length];
-        c.gradient(p, g);
+        gradient.accept(p, g);
         double eps = 1e-6;
         for (int j = 0; j < ids.length; j++)
             for (int a = 0; a < 3; a++) {
@@ -27,12 +35,12 @@ class GradientTest {
                 int k = 3 * ids[j] + a;
                 double keep = x[k];
                 x[k] = keep + eps;
-                double plus = c.evaluate(p);
+                double plus = value.applyAsDouble(p);
                 x[k] = keep - eps;
-                double minus = c.evaluate(p);
+                double minus = value.applyAsDouble(p);
                 x[k] = keep;
                 double fd = (plus - minus) / (2 * eps);
-                assertEquals(fd, g[3 * j + a], 1e-6, c.getClass().getSimpleName() + " dC/dx[" + j + "][" + a + "]");
+                assertEquals(fd, g[3 * j + a], 1e-6, name + " dC/dx[" + j + "][" + a + "]");
             }
     }
 

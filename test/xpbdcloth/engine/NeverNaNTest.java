@@ -35,23 +35,28 @@ class NeverNaNTest {
      * A constraint of the shear family that writes NaN into its particle during one given step (read
      * from the simulation, so that the replay of that step poisons it again, as a real constraint would).
      */
-    static final class Poison extends Constraint {
+    static final class Poison extends ConstraintBlock {
         final int particle;
         final long badStep;
         Simulation sim;
 
         Poison(int particle, long badStep) {
-            super(ConstraintFamily.SHEAR);
+            super(ConstraintFamily.SHEAR, 1, 1);
             this.particle = particle;
             this.badStep = badStep;
+            particles[newSlot()] = particle;
         }
 
-        @Override public int[] particles() { return new int[] {particle}; }
-        @Override public double evaluate(Particles p) { return 0; }
-        @Override public void gradient(Particles p, double[] out) { out[0] = out[1] = out[2] = 0; }
-        @Override protected void project(Particles p, SolverContext ctx) {
+        @Override public double evaluate(int i, Particles p) { return 0; }
+        @Override public void gradient(int i, Particles p, double[] out) { out[0] = out[1] = out[2] = 0; }
+        @Override void project(int i, Particles p, SolverContext ctx) {
             if (sim.stepCount() + 1 == badStep) p.x[3 * particle + 1] = Double.NaN;
         }
+        @Override void projectRange(int from, int to, Particles p, SolverContext ctx) { for (int i = from; i < to; i++) project(i, p, ctx); }
+        @Override void projectListed(int[] order, int from, int to, Particles p, SolverContext ctx) { for (int k = from; k < to; k++) project(order[k], p, ctx); }
+        @Override Constraint view(int i) { return new Constraint(this, i) { }; }
+        @Override ConstraintBlock emptyLike(int capacity) { throw new UnsupportedOperationException("a test block"); }
+        @Override void copyRest(int i, ConstraintBlock from, int j) { throw new UnsupportedOperationException("a test block"); }
     }
 
     static double[][] state(Simulation sim) {
@@ -70,7 +75,7 @@ class NeverNaNTest {
         Simulation sim = hangingCloth(s);
         Poison poison = new Poison(20, 7);
         poison.sim = sim;
-        sim.add(poison);
+        sim.addBlocks(java.util.List.of(poison));
         for (int k = 0; k < 6; k++) sim.step();
         double[][] before = state(sim);
         SimulationDivergedException e = assertThrows(SimulationDivergedException.class, sim::step);

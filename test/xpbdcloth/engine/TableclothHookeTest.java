@@ -53,7 +53,7 @@ class TableclothHookeTest {
         double hemLift = 0, freeWeight = 0, worst = 0;
         for (Constraint c : cloth.constraints()) {
             DistanceConstraint d = (DistanceConstraint) c;
-            int a = d.a, b = d.b;
+            int a = d.a(), b = d.b();
             double dx = p.x(b) - p.x(a), dy = p.y(b) - p.y(a), dz = p.z(b) - p.z(a);
             double l = Math.sqrt(dx * dx + dy * dy + dz * dz), tension = (l - d.restLength()) / ALPHA;
             f[3 * a] += tension * dx / l; f[3 * a + 1] += tension * dy / l; f[3 * a + 2] += tension * dz / l;

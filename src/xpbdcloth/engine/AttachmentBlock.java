@@ -1,0 +1,95 @@
+package xpbdcloth.engine;
+
+import java.util.Arrays;
+
+/**
+ * Attachments: each holds a particle i at a movable target point t (the mouse grab, or any art-directed
+ * handle).
+ *
+ * <pre>
+ *   C(x) = |x − t|,   ∇C = (x − t)/|x − t|,   Σ wᵢ|∇ᵢC|² = w
+ * </pre>
+ * Source: the attachment constraint of Müller et al. 2007 §4.4, as a zero-length distance constraint to
+ * a point of infinite mass. It uses the simulation's mode like every other constraint, so a grabbed PBD
+ * cloth and a grabbed XPBD cloth respond to the hand in their own way. Degenerate case: at the target
+ * (C = 0) there is no direction and nothing to do.
+ */
+public final class AttachmentBlock extends ConstraintBlock {
+    /** t per constraint, xyz interleaved, m. */
+    double[] target;
+
+    public AttachmentBlock(int capacity) {
+        super(ConstraintFamily.ATTACHMENT, 1, capacity);
+        target = new double[3 * lambda.length];
+    }
+
+    /** Adds an attachment of particle i to (x, y, z); returns its index. */
+    public int add(int particle, double x, double y, double z) {
+        Check.atLeast("particle", particle, 0);
+        EngineRange.vector("target", x, y, z, EngineRange.MAX_POSITION);
+        int i = newSlot();
+        particles[i] = particle;
+        target[3 * i] = x; target[3 * i + 1] = y; target[3 * i + 2] = z;
+        return i;
+    }
+
+    public double targetX(int i) { return target[3 * i]; }
+    public double targetY(int i) { return target[3 * i + 1]; }
+    public double targetZ(int i) { return target[3 * i + 2]; }
+
+    public void moveTarget(int i, double x, double y, double z) {
+        EngineRange.vector("target", x, y, z, EngineRange.MAX_POSITION);
+        target[3 * i] = x; target[3 * i + 1] = y; target[3 * i + 2] = z;
+    }
+
+    @Override public double evaluate(int i, Particles p) {
+        int k = 3 * particles[i];
+        double dx = p.x[k] - target[3 * i], dy = p.x[k + 1] - target[3 * i + 1], dz = p.x[k + 2] - target[3 * i + 2];
+        return Math.sqrt(dx * dx + dy * dy + dz * dz);
+    }
+
+    @Override public void gradient(int i, Particles p, double[] out) {
+        int k = 3 * particles[i];
+        double dx = p.x[k] - target[3 * i], dy = p.x[k + 1] - target[3 * i + 1], dz = p.x[k + 2] - target[3 * i + 2];
+        double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        double s = len < DistanceBlock.MIN_LENGTH ? 0 : 1 / len;
+        out[0] = dx * s; out[1] = dy * s; out[2] = dz * s;
+    }
+
+    @Override void project(int i, Particles p, SolverContext ctx) {
+        final double[] x = p.x;
+        final int particle = particles[i], k = 3 * particle;
+        double dx = x[k] - target[3 * i], dy = x[k + 1] - target[3 * i + 1], dz = x[k + 2] - target[3 * i + 2];
+        double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        if (len < DistanceBlock.MIN_LENGTH) return;
+        double w = p.w[particle];
+        double s = w * deltaLambda(i, len, w, ctx) / len;
+        x[k] += s * dx; x[k + 1] += s * dy; x[k + 2] += s * dz;
+    }
+
+    @Override void projectRange(int from, int to, Particles p, SolverContext ctx) {
+        for (int i = from; i < to; i++) project(i, p, ctx);
+    }
+
+    @Override void projectListed(int[] order, int from, int to, Particles p, SolverContext ctx) {
+        for (int k = from; k < to; k++) project(order[k], p, ctx);
+    }
+
+    @Override AttachmentConstraint view(int i) { return new AttachmentConstraint(this, i); }
+
+    @Override AttachmentBlock emptyLike(int capacity) { return new AttachmentBlock(capacity); }
+
+    @Override void copyRest(int i, ConstraintBlock from, int j) {
+        System.arraycopy(((AttachmentBlock) from).target, 3 * j, target, 3 * i, 3);
+    }
+
+    @Override void grow(int capacity) {
+        super.grow(capacity);
+        target = Arrays.copyOf(target, 3 * capacity);
+    }
+
+    @Override void remove(int i) {
+        System.arraycopy(target, 3 * (i + 1), target, 3 * i, 3 * (count - i - 1));
+        super.remove(i);
+    }
+}
