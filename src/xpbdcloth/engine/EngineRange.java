@@ -22,6 +22,8 @@ public final class EngineRange {
     public static final double MIN_MASS = 1e-18, MAX_MASS = 1e12;
     /** Each coordinate of a position or target, m; each component of a velocity, m/s; of a force, N. */
     public static final double MAX_POSITION = 1e6, MAX_SPEED = 1e6, MAX_FORCE = 1e9;
+    /** Velocity damping, 1/s (1e4 halves a velocity in 69 µs: anything above is a frozen cloth). */
+    public static final double MAX_DAMPING = 1e4;
     /** XPBD compliance α, m/N. */
     public static final double MAX_COMPLIANCE = 1e6;
     /** A sphere's radius and margin, m. */

@@ -16,7 +16,8 @@ import java.util.List;
  *   <li><b>collide</b>: this substep's contacts are found ({@link ContactSet});</li>
  *   <li><b>solve</b>: λ = 0 for every constraint (once per substep, never per sweep), then n sweeps or
  *       global iterations ({@link SolveStage}), each ending with the contacts;</li>
- *   <li><b>update velocities</b>: v = (x − x_prev)/h.</li>
+ *   <li><b>update velocities</b>: v = (x − x_prev)/h;</li>
+ *   <li><b>velocity pass</b>: damping v ← v·e^(−c·h), frame-rate independent (none by default).</li>
  * </ol>
  * External forces are gathered once per step and act on all of its substeps. The constraint order is
  * cloth constraints as added, then attachments, then contacts, so hard contacts have the last word.
@@ -297,6 +298,8 @@ public final class Simulation {
             observer.after(Stage.SOLVE);
             updateVelocities(h);
             observer.after(Stage.UPDATE_VELOCITIES);
+            velocityPass(h);
+            observer.after(Stage.VELOCITY_PASS);
             time = t;
         }
         java.util.Arrays.fill(particles.force, 0);
@@ -431,6 +434,19 @@ public final class Simulation {
         final double[] x = particles.x, prev = particles.prev, v = particles.v;
         final double inv = 1.0 / h;
         for (int k = 0, n = 3 * particles.count(); k < n; k++) v[k] = (x[k] - prev[k]) * inv;
+    }
+
+    /** Damping, v ← v·e^(−c·h) for free particles (pinned ones have v = 0 or a scripted velocity). */
+    private void velocityPass(double h) {
+        final double c = settings.damping();
+        if (c == 0) return;
+        final double decay = Math.exp(-c * h);
+        final double[] v = particles.v, w = particles.w;
+        for (int i = 0, n = particles.count(); i < n; i++) {
+            if (w[i] == 0) continue;
+            final int k = 3 * i;
+            v[k] *= decay; v[k + 1] *= decay; v[k + 2] *= decay;
+        }
     }
 
     /** Observes the solver after every sweep (convergence experiments); null for none. */

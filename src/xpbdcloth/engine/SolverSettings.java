@@ -14,6 +14,8 @@ public final class SolverSettings {
     private double timestep = 0.020;
     private boolean mullerCorrection = true;
     private double gravityX = 0, gravityY = -9.81, gravityZ = 0;
+    /** Velocity damping c, 1/s: v decays as e^(−c·t) in the velocity pass; 0 = none (the original's). */
+    private double damping = 0;
     private ConstraintOrder order = ConstraintOrder.AS_BUILT;
     private int threads = 1;
     private SolverType solver = SolverType.GAUSS_SEIDEL;
@@ -37,6 +39,7 @@ public final class SolverSettings {
         s.timestep = timestep;
         s.mullerCorrection = mullerCorrection;
         s.gravityX = gravityX; s.gravityY = gravityY; s.gravityZ = gravityZ;
+        s.damping = damping;
         s.order = order;
         s.threads = threads;
         s.solver = solver;
@@ -106,6 +109,19 @@ public final class SolverSettings {
     public SolverSettings gravity(double gx, double gy, double gz) {
         EngineRange.vector("gravity", gx, gy, gz, EngineRange.MAX_GRAVITY);
         gravityX = gx; gravityY = gy; gravityZ = gz;
+        return this;
+    }
+
+    /** Velocity damping c (1/s), applied after each substep as v ← v·e^(−c·h). */
+    public double damping() { return damping; }
+
+    /**
+     * Velocity damping c ∈ [0, {@link EngineRange#MAX_DAMPING}] per second. Multiplying by e^(−c·h) each
+     * substep makes the decay e^(−c·t) whatever dt and the substep count are (a per-step factor would make
+     * the cloth's damping depend on the frame rate).
+     */
+    public SolverSettings damping(double perSecond) {
+        damping = Check.inRange("damping", perSecond, 0, EngineRange.MAX_DAMPING);
         return this;
     }
 

@@ -16,7 +16,12 @@ public enum Stage {
     /** The constraints are projected (λ reset first): n sweeps or n global iterations, then contacts. */
     SOLVE,
     /** v = (x − x_prev) / h. */
-    UPDATE_VELOCITIES;
+    UPDATE_VELOCITIES,
+    /**
+     * What acts on velocities rather than positions: damping, v ← v·e^(−c·h) ({@link SolverSettings#damping}).
+     * The place for velocity-level friction and restitution once contacts need them.
+     */
+    VELOCITY_PASS;
 
     /** The name the HUD and messages use: "update velocities". */
     public String label() { return name().toLowerCase(java.util.Locale.ROOT).replace('_', ' '); }

@@ -14,7 +14,7 @@
  *       projection the transient contacts of {@code ContactSet} use).</li>
  *   <li>{@link xpbdcloth.engine.Simulation}: the step, stage by stage ({@link xpbdcloth.engine.Stage}): predict,
  *       kinematics, collide (transient contacts, {@code ContactSet}), solve ({@code SolveStage}: sequential,
- *       parallel coloured or global, over a {@code SweepOrder} of blocks), update velocities.</li>
+ *       parallel coloured or global, over a {@code SweepOrder} of blocks), update velocities, velocity pass.</li>
  *   <li>{@link xpbdcloth.engine.SolverSettings}, {@link xpbdcloth.engine.ConstraintMode}: parameters and units.</li>
  *   <li>{@link xpbdcloth.engine.MeshClothBuilder}, {@link xpbdcloth.engine.ClothBuilder}, {@link xpbdcloth.engine.Cloth}:
  *       cloths from any mesh ({@code xpbdcloth.mesh}), grid cloths and ropes.</li>

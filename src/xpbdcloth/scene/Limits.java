@@ -52,6 +52,8 @@ public final class Limits {
     public static final Range DT = new Range(1e-4, 0.1, "s");
     /** Each component of gravity, m/s² (about ±10 g). */
     public static final Range GRAVITY = new Range(-100, 100, "m/s²");
+    /** Velocity damping, 1/s: 100 stops a cloth's motion in about 50 ms. */
+    public static final Range DAMPING = new Range(0, 100, "1/s");
     public static final Range SPHERE_RADIUS = new Range(1e-3, 100, "m");
     public static final Range MARGIN = new Range(0, 1, "m");
     /** μₛ and μₖ. */

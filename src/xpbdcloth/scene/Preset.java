@@ -101,12 +101,14 @@ public final class Preset {
         public final double dt;
         public final boolean mullerCorrection;
         public final double[] gravity;
+        /** Velocity damping, 1/s (0 when the preset does not say). */
+        public final double damping;
         public final xpbdcloth.engine.SolverType type;
 
         Solver(ConstraintMode mode, int iterations, int substeps, double dt, boolean mullerCorrection, double[] gravity,
-               xpbdcloth.engine.SolverType type) {
+               double damping, xpbdcloth.engine.SolverType type) {
             this.mode = mode; this.iterations = iterations; this.substeps = substeps; this.dt = dt;
-            this.mullerCorrection = mullerCorrection; this.gravity = gravity; this.type = type;
+            this.mullerCorrection = mullerCorrection; this.gravity = gravity; this.damping = damping; this.type = type;
         }
     }
 

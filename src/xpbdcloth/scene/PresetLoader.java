@@ -345,7 +345,7 @@ public final class PresetLoader {
         }
 
         Preset.Solver solver(Node n) {
-            object(n, Set.of("mode", "iterations", "substeps", "dt", "mullerCorrection", "gravity", "type"));
+            object(n, Set.of("mode", "iterations", "substeps", "dt", "mullerCorrection", "gravity", "damping", "type"));
             ConstraintMode mode = choice(required(n, "mode"), ConstraintMode.class);
             int iterations = integer(required(n, "iterations"), Limits.ITERATIONS);
             Node s = optional(n, "substeps");
@@ -355,11 +355,13 @@ public final class PresetLoader {
             boolean muller = m == null || bool(m);
             Node g = optional(n, "gravity");
             double[] gravity = g == null ? new double[] {0, -9.81, 0} : vector(g, Limits.GRAVITY);
+            Node d = optional(n, "damping");
+            double damping = d == null ? 0 : number(d, Limits.DAMPING);
             Node t = optional(n, "type");
             xpbdcloth.engine.SolverType type = t == null ? xpbdcloth.engine.SolverType.GAUSS_SEIDEL : solverType(t);
             if (mode == ConstraintMode.PBD && type != xpbdcloth.engine.SolverType.GAUSS_SEIDEL)
                 throw fail(t.path, "must be gauss-seidel in PBD mode (a global solve needs XPBD's compliance), was \"" + type.label() + "\"");
-            return new Preset.Solver(mode, iterations, substeps, dt, muller, gravity, type);
+            return new Preset.Solver(mode, iterations, substeps, dt, muller, gravity, damping, type);
         }
 
         /** "gauss-seidel", "jacobi-pcg" or "multigrid-pcg". */

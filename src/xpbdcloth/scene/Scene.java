@@ -30,7 +30,7 @@ public final class Scene {
         Preset.Solver s = preset.solver;
         SolverSettings settings = new SolverSettings().mode(s.mode).iterations(s.iterations).substeps(s.substeps)
                 .timestep(s.dt).mullerCorrection(s.mullerCorrection).gravity(s.gravity[0], s.gravity[1], s.gravity[2])
-                .solver(s.type);
+                .damping(s.damping).solver(s.type);
         simulation = cloth.simulation(settings);
 
         for (Preset.SphereSpec sp : preset.spheres) {

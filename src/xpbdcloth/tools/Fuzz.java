@@ -13,6 +13,7 @@ import xpbdcloth.engine.Cloth;
 import xpbdcloth.engine.ClothBuilder;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.ConstraintMode;
+import xpbdcloth.engine.EngineRange;
 import xpbdcloth.engine.Metrics;
 import xpbdcloth.engine.Particles;
 import xpbdcloth.engine.Simulation;
@@ -131,7 +132,8 @@ public final class Fuzz implements Callable<Integer> {
         String[][] choices = {
                 {"iterations", "0"}, {"substeps", "-3"}, {"dt", "NaN"}, {"dt", "-0.01"}, {"stiffness", "1.5"},
                 {"compliance", "-1.0E-6"}, {"compliance", "NaN"}, {"mass", "-1.0"}, {"radius", "0.0"},
-                {"arealDensity", "Infinity"}, {"gravity.y", "NaN"}, {"pin row", "99"}, {"staticFriction", "-0.5"}};
+                {"arealDensity", "Infinity"}, {"gravity.y", "NaN"}, {"pin row", "99"}, {"staticFriction", "-0.5"},
+                {"damping", "-2.0"}};
         return choices[r.nextInt(choices.length)];
     }
 
@@ -176,7 +178,8 @@ public final class Fuzz implements Callable<Integer> {
                 .substeps(illegal != null && illegal[0].equals("substeps") ? -3 : 1 + r.nextInt(r.nextInt(10) == 0 ? 100 : 10))
                 .timestep(bad(illegal, "dt", logUniform(r, 1e-5, 0.1)))
                 .mullerCorrection(r.nextBoolean())
-                .gravity(0, bad(illegal, "gravity.y", -9.81), 0);
+                .gravity(0, bad(illegal, "gravity.y", -9.81), 0)
+                .damping(bad(illegal, "damping", r.nextInt(4) == 0 ? logUniform(r, 1e-3, EngineRange.MAX_DAMPING) : 0));
         if (s.iterations() > 30) s.substeps(1);
         else if (s.substeps() > 10) s.iterations(Math.min(s.iterations(), 3));
         if (solver != SolverType.GAUSS_SEIDEL) capForGlobal(s);

@@ -119,6 +119,7 @@ final class PresetFuzz {
             json.append(" }, \"solver\": { \"mode\": \"").append(pbd ? "PBD" : "XPBD").append("\", \"iterations\": ").append(iterations)
                 .append(", \"substeps\": ").append(substeps).append(", \"dt\": ").append(num(dt))
                 .append(", \"mullerCorrection\": ").append(r.nextBoolean()).append(", \"gravity\": ").append(vec(Limits.GRAVITY))
+                .append(", \"damping\": ").append(num(draw(Limits.DAMPING, false)))
                 .append(", \"type\": \"").append(global ? (r.nextBoolean() ? "jacobi-pcg" : "multigrid-pcg") : "gauss-seidel").append("\" }");
             int spheres = r.nextInt(3);
             if (spheres > 0) {
@@ -163,6 +164,7 @@ final class PresetFuzz {
                     {"solver.dt", "\"dt\": ", Limits.DT.text(), "0.2"},
                     {"solver.iterations", "\"iterations\": ", Limits.ITERATIONS.text(), "1001"},
                     {"solver.substeps", "\"substeps\": ", Limits.SUBSTEPS.text(), "0"},
+                    {"solver.damping", "\"damping\": ", Limits.DAMPING.text(), "-1"},
                     {"solver.gravity[0]", "\"gravity\": [", Limits.GRAVITY.text(), "-1e6"},
                     {"cloth.origin[0]", "\"origin\": [", Limits.POSITION.text(), "1e5"},
                     {"families.structural.compliance", "\"structural\": { \"stiffness\": ", Limits.COMPLIANCE.text(), null},
