@@ -78,6 +78,32 @@ public final class Limits {
     /** Entries in cloth.pins (an edge name counts once, whatever its length). */
     public static final int MAX_PIN_ENTRIES = 4096;
     public static final int MAX_PIN_MOTIONS = 256;
+    /**
+     * The work a step may ask of Gauss–Seidel, in particle visits: particles × substeps × (iterations +
+     * spheres). 2²⁵ is, for example, 512² particles at 128 sweeps a step, or 128² at 2048: about 4 s per
+     * step on a 2-core laptop (about 5 constraints per particle at 50 M projections/s). Each field can be
+     * at its maximum; all of them at once would be hours per step.
+     */
+    public static final long MAX_WORK = 1L << 25;
+    /**
+     * The same for the global solvers, whose iteration is a whole linear solve (up to 100 conjugate-gradient
+     * iterations) and costs more than it saves beyond this: 64² particles at 2 iterations × 10 substeps,
+     * measured at 1.7 s per step with Jacobi-PCG (128² took 13.8 s, 256² more than a minute).
+     */
+    public static final long MAX_GLOBAL_WORK = 64 * 64 * 20;
+
+    /** The problem with a step this large, in words, or null if it is within {@link #MAX_WORK} (or {@link #MAX_GLOBAL_WORK}). */
+    public static String workProblem(long particles, int iterations, int substeps, int spheres, boolean global) {
+        long work = global ? particles * substeps * (long) iterations : particles * substeps * (long) (iterations + spheres);
+        long max = global ? MAX_GLOBAL_WORK : MAX_WORK;
+        if (work <= max) return null;
+        return global
+                ? "particles × substeps × iterations must be at most " + max + " with a global solver (64² at 2 × 10 takes 1.7 s a step), was "
+                        + particles + " × " + substeps + " × " + iterations + " = " + work + "; use gauss-seidel, or fewer particles, substeps or iterations"
+                : "particles × substeps × (iterations + spheres) must be at most " + max + " (about 4 s a step), was "
+                        + particles + " × " + substeps + " × (" + iterations + " + " + spheres + ") = " + work + "; use fewer particles, substeps or iterations";
+    }
+
     /** Vertices of a mesh cloth after welding: as many as the largest grid. */
     public static final Range MESH_VERTICES = new Range(2, 512 * 512, "vertices");
     /** A mesh file's uniform scale (its units to metres). */

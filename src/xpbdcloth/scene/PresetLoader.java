@@ -201,6 +201,9 @@ public final class PresetLoader {
             Node ms = optional(root, "pinMotions");
             if (ms != null) for (Node m : array(ms, Limits.MAX_PIN_MOTIONS)) motions.add(pinMotion(m, cloth));
             Node w = optional(root, "wind");
+            long particles = cloth.mesh != null ? cloth.mesh.vertexCount() : (long) cloth.columns * cloth.rows;
+            String tooMuch = Limits.workProblem(particles, solver.iterations, solver.substeps, spheres.size(), solver.type != xpbdcloth.engine.SolverType.GAUSS_SEIDEL);
+            if (tooMuch != null) throw fail("solver", tooMuch);
             return new Preset(file, name, description, cloth, families, solver, spheres, motions, w == null ? null : wind(w));
         }
 

@@ -175,8 +175,10 @@ public final class SketchState {
         // Side by side, the left cloth is PBD whatever the shared mode.
         if (sideBySide) { error("side by side runs PBD on the left" + unchanged); return; }
         SolverType[] all = SolverType.values();
+        SolverType next = all[(shared.solver().ordinal() + 1) % all.length];
+        if (refusedAsTooMuchWork(shared.iterations(), shared.substeps(), next, "solver " + next.label())) return;
         try {
-            shared.solver(all[(shared.solver().ordinal() + 1) % all.length]);
+            shared.solver(next);
         } catch (IllegalArgumentException refused) { // the engine's rule: a global solve needs XPBD
             error("PBD mode" + unchanged);
             return;
@@ -186,13 +188,32 @@ public final class SketchState {
     }
 
     public void changeIterations(int delta) {
-        shared.iterations((int) Limits.ITERATIONS.clamp(shared.iterations() + delta));
+        int next = (int) Limits.ITERATIONS.clamp(shared.iterations() + delta);
+        if (refusedAsTooMuchWork(next, shared.substeps(), shared.solver(), next + " iterations")) return;
+        shared.iterations(next);
         applyAll();
     }
 
     public void changeSubsteps(int delta) {
-        shared.substeps((int) Limits.SUBSTEPS.clamp(shared.substeps() + delta));
+        int next = (int) Limits.SUBSTEPS.clamp(shared.substeps() + delta);
+        if (refusedAsTooMuchWork(shared.iterations(), next, shared.solver(), next + " substeps")) return;
+        shared.substeps(next);
         applyAll();
+    }
+
+    /**
+     * The presets' work limit ({@link Limits#workProblem}) for the running cloths: a key that would ask
+     * more of a step than a preset may (a 512² cloth switched to a global solver would take minutes a
+     * step and freeze the window) is refused with a notice, and nothing changes.
+     */
+    private boolean refusedAsTooMuchWork(int iterations, int substeps, SolverType solver, String what) {
+        for (Scene s : running()) {
+            long particles = s.cloth().particles().count();
+            if (Limits.workProblem(particles, iterations, substeps, s.simulation().spheres().size(), solver != SolverType.GAUSS_SEIDEL) == null) continue;
+            error(what + " would ask too much of a step for " + particles + " particles (the presets' work limit): unchanged");
+            return true;
+        }
+        return false;
     }
 
     public void cycleTimestep() {

@@ -22,10 +22,12 @@ import xpbdcloth.engine.SolverSettings;
 import xpbdcloth.engine.SolverType;
 import xpbdcloth.engine.Sphere;
 import xpbdcloth.engine.SpherePath;
+import xpbdcloth.engine.Wind;
 
 /**
- * Seeded random simulations: sizes, pins, families, k, α, iterations, substeps, dt, masses from 1e-6 to
- * 1e3 kg, fast and spinning spheres, grabbed particles, and in one case of ten an illegal parameter.
+ * Seeded random simulations: sizes, pins, families, k, α, iterations, substeps, dt, damping, masses from
+ * 1e-6 to 1e3 kg, fast and spinning spheres, wind, two threads, grabbed particles, switches of mode and
+ * solver, and in one case of ten an illegal parameter.
  * Every case must end with finite positions, or, for the illegal one, with an IllegalArgumentException
  * that names the parameter and its value. A failing case prints its seed; {@code --seed} replays it.
  */
@@ -44,8 +46,9 @@ public final class Fuzz implements Callable<Integer> {
     public static String runCase(long seed, SolverType solver) {
         Random r = new Random(seed);
         String[] illegal = r.nextInt(10) == 0 ? pickIllegal(r) : null;
+        Simulation sim = null;
         try {
-            Simulation sim = build(r, illegal, solver);
+            sim = build(r, illegal, solver);
             SolverSettings s = sim.settings();
             AttachmentConstraint grab = null;
             int steps = 10 + r.nextInt(40);
@@ -70,7 +73,6 @@ public final class Fuzz implements Callable<Integer> {
                 }
                 sim.step();
             }
-            sim.close();
             if (illegal != null) return "seed " + seed + ": illegal " + illegal[0] + " = " + illegal[1] + " was accepted";
             if (!Metrics.allFinite(sim.particles())) return "seed " + seed + ": non-finite position or velocity";
             return null;
@@ -84,6 +86,8 @@ public final class Fuzz implements Callable<Integer> {
             return "seed " + seed + ": diverged: " + e.getMessage();
         } catch (RuntimeException | Error e) {
             return "seed " + seed + ": " + e;
+        } finally {
+            if (sim != null) sim.close(); // a failed case must not leave its helper threads behind
         }
     }
 
@@ -199,6 +203,10 @@ public final class Fuzz implements Callable<Integer> {
                     .spin(100 * r.nextGaussian(), 100 * r.nextGaussian(), 100 * r.nextGaussian());
             sim.add(sphere);
         }
+        // Wind in one case of four (within the presets' ranges), two threads in one of ten.
+        if (r.nextInt(4) == 0)
+            sim.add(new Wind(cloth.triangles(), 20 * r.nextGaussian(), 5 * r.nextGaussian(), 20 * r.nextGaussian(), 10 * r.nextDouble(), r.nextDouble()));
+        if (r.nextInt(10) == 0) s.threads(2);
         if (illegal != null && illegal[0].equals("radius") && spheres == 0) new Sphere(SpherePath.fixed(0, 0, 0), 0, 0, 0, 0);
         if (illegal != null && illegal[0].equals("staticFriction") && spheres == 0) new Sphere(SpherePath.fixed(0, 0, 0), 1, 0, -0.5, 0);
         return sim;

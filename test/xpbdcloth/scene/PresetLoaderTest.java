@@ -27,6 +27,28 @@ class PresetLoaderTest {
         assertEquals(-9.81, p.solver.gravity[1], "default gravity");
     }
 
+    /**
+     * Every field within its range, and still a step of hours: 512² particles at 1000 iterations × 100
+     * substeps. The product is limited, and the error names it with its factors; the same cloth at the
+     * limit loads. Global solvers have their own, smaller limit (64² at 2 × 10).
+     */
+    @Test
+    void aStepOfHoursIsRefusedWithItsFactors() {
+        String big = valid().replace("\"columns\": 4, \"rows\": 4", "\"columns\": 512, \"rows\": 512");
+        PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse("big.json",
+                big.replace("\"iterations\": 2", "\"iterations\": 1000, \"substeps\": 100")));
+        assertEquals("solver", e.field());
+        assertTrue(e.problem().startsWith("particles × substeps × (iterations + spheres) must be at most 33554432"), e.getMessage());
+        assertTrue(e.problem().contains("262144 × 100 × (1000 + 0) = 26214400000"), e.getMessage());
+        assertEquals(128, PresetLoader.parse("big.json", big.replace("\"iterations\": 2", "\"iterations\": 128")).solver.iterations);
+
+        String global = valid().replace("\"iterations\": 2", "\"iterations\": 2, \"substeps\": 10, \"type\": \"jacobi-pcg\"");
+        e = assertThrows(PresetException.class, () -> PresetLoader.parse("g.json", global.replace("\"columns\": 4, \"rows\": 4", "\"columns\": 128, \"rows\": 128")));
+        assertTrue(e.problem().startsWith("particles × substeps × iterations must be at most 81920 with a global solver"), e.getMessage());
+        assertTrue(e.problem().endsWith("use gauss-seidel, or fewer particles, substeps or iterations"), e.getMessage());
+        assertEquals(64, PresetLoader.parse("g.json", global.replace("\"columns\": 4, \"rows\": 4", "\"columns\": 64, \"rows\": 64")).cloth.columns);
+    }
+
     /** A near miss of a built-in name says which one, and lists them. */
     @Test
     void aMistypedSceneNameSuggestsTheNearest() {

@@ -28,6 +28,28 @@ class SketchRefusalsTest {
         assertFalse(fine.message().startsWith("the cloth stretches"), "the shipped hanging cloth holds: " + fine.message());
     }
 
+    /**
+     * A key may not ask more of a step than a preset may: on a 128² cloth, v (a global solver) would take
+     * 14 s a step and freeze the window, and iterations stop at the work limit; each is refused with a
+     * notice and nothing changes.
+     */
+    @Test
+    void aKeyThatWouldFreezeTheWindowIsRefused() {
+        String text = "{ \"name\": \"big\", \"cloth\": { \"columns\": 128, \"rows\": 128, \"width\": 1, \"height\": 1, \"arealDensity\": 0.2,"
+                + " \"pins\": [\"top-left\", \"top-right\"] }, \"families\": { \"structural\": { \"stiffness\": 1, \"compliance\": 1e-8 } },"
+                + " \"solver\": { \"mode\": \"XPBD\", \"iterations\": 900, \"substeps\": 2, \"dt\": 0.02 } }";
+        SketchState s = new SketchState(PresetLoader.parse("big.json", text));
+        s.cycleSolver();
+        assertEquals(SolverType.GAUSS_SEIDEL, s.solverType());
+        assertEquals(SolverType.GAUSS_SEIDEL, s.first().settings().solver());
+        assertTrue(s.messageIsError() && s.message().startsWith("solver jacobi-pcg would ask too much of a step for 16384 particles"), s.message());
+        s.changeSubsteps(+1);
+        assertEquals(2, s.first().settings().substeps(), "16384 × 3 × 900 is over the limit");
+        assertTrue(s.message().startsWith("3 substeps would ask too much"), s.message());
+        s.changeIterations(+1); // 16384 × 2 × 901 = 29.5 M: under 2²⁵ = 33.6 M, allowed
+        assertEquals(901, s.first().settings().iterations());
+    }
+
     @Test
     void vInPbdModeSaysSoAndKeepsGaussSeidel() {
         SketchState s = new SketchState(PresetLoader.builtIn("hanging"));
