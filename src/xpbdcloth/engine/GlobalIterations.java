@@ -4,19 +4,31 @@ package xpbdcloth.engine;
  * The global solve: each iteration is one Newton–PCG step on all cloth constraints at once
  * ({@link GlobalSolver}), then a Gauss–Seidel sweep over the attachments and the substep's contacts
  * (inequalities and moving targets, which a linear solve handles badly).
+ *
+ * <p>While the substep has contacts, that sweep covers the cloth constraints too. The linear system does
+ * not see the contacts, so a Newton step alone pulls the cloth back into a collider, the contact sweep
+ * pushes it out, and the two fight: a sphere starting inside a 32² cloth gave strain 88–230 and 9 kJ of
+ * kinetic energy under Jacobi-PCG where Gauss–Seidel peaks at 11.5. A local sweep after the global step
+ * lets each constraint meet the contacts as Gauss–Seidel does (strain back to 2–13). Without contacts
+ * nothing changes: the global step is followed by the attachments alone.
  */
 final class GlobalIterations implements SolveStage {
     private final GlobalSolver global;
     /** The attachments and contacts, swept after each global step. */
     private final SequentialSweeps rest;
+    /** The cloth constraints, attachments and contacts, swept after each global step while there are contacts. */
+    private final SequentialSweeps all;
+    private final ContactSet contacts;
     private final Particles particles;
     private final SolverContext ctx;
     private final Simulation sim;
     private final SweepListener listener;
 
-    GlobalIterations(GlobalSolver global, SequentialSweeps rest, Particles particles, SolverContext ctx, Simulation sim, SweepListener listener) {
+    GlobalIterations(GlobalSolver global, SequentialSweeps rest, SequentialSweeps all, ContactSet contacts, Particles particles, SolverContext ctx, Simulation sim, SweepListener listener) {
         this.global = global;
         this.rest = rest;
+        this.all = all;
+        this.contacts = contacts;
         this.particles = particles;
         this.ctx = ctx;
         this.sim = sim;
@@ -28,7 +40,7 @@ final class GlobalIterations implements SolveStage {
     @Override public void solve(int substep, int iterations) {
         for (int it = 0; it < iterations; it++) {
             global.iterate(particles, ctx);
-            rest.sweep();
+            (contacts.count() > 0 ? all : rest).sweep();
             listener.afterSweep(sim, substep, it);
         }
     }
@@ -39,7 +51,7 @@ final class GlobalIterations implements SolveStage {
                 for (int it = 0; it < iterations; it++) {
                     global.iterate(particles, ctx);
                     probe.check(global);
-                    rest.sweep(probe);
+                    (contacts.count() > 0 ? all : rest).sweep(probe);
                 }
             }
 

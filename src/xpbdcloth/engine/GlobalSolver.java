@@ -32,6 +32,8 @@ final class GlobalSolver {
     private final double[] c, alphaTilde, b, dl, r, z, p, ap, scratch;
     /** W JᵀΔλ per particle coordinate, and the positions the line search starts from. */
     private final double[] move, start;
+    /** Per particle, the most it may move in one iteration (m): {@link #MAX_MOVE} of its shortest distance constraint. */
+    private final double[] reach;
     private AggregationMultigrid mg;
     private int lastIterations, totalIterations, rejectedSteps;
     private double lastRelativeResidual;
@@ -48,8 +50,10 @@ final class GlobalSolver {
     static final double DAMPING = 1e-6;
     /** Armijo's sufficient-decrease constant: any small positive value; 1e-4 is the textbook one. */
     static final double ARMIJO = 1e-4;
-    /** The shortest step the line search tries before it gives the iteration up. */
+    /** The shortest step the line search tries, relative to its first, before it gives the iteration up. */
     static final double MIN_STEP = 1.0 / 256;
+    /** The most a particle may move in one global iteration, as a fraction of its shortest distance constraint. */
+    static final double MAX_MOVE = 0.5;
 
     GlobalSolver(Constraint[] constraints, int particleCount, boolean multigrid, double tolerance, int maxIterations) {
         this.cs = constraints;
@@ -136,6 +140,13 @@ final class GlobalSolver {
         ap = new double[m];
         move = new double[3 * particleCount];
         start = new double[3 * particleCount];
+        reach = new double[particleCount];
+        Arrays.fill(reach, Double.POSITIVE_INFINITY);
+        for (Constraint con : constraints) {
+            if (!(con instanceof DistanceConstraint) || ((DistanceConstraint) con).restLength() <= 0) continue;
+            double r = MAX_MOVE * ((DistanceConstraint) con).restLength();
+            for (int q : con.particles()) reach[q] = Math.min(reach[q], r);
+        }
     }
 
     boolean multigrid() { return multigrid; }
@@ -152,14 +163,14 @@ final class GlobalSolver {
 
     /**
      * One global iteration: linearise, solve for Δλ, then move the particles by x += s·W JᵀΔλ and
-     * λ += s·Δλ with the longest step s ∈ {1, ½, ¼, …} that lowers the merit ‖C(x) + α̃λ‖² by Armijo's
-     * rule (Nocedal and Wright 2006, §3.1 and §11.2). Δλ makes the merit's slope −‖b‖²(1 − η) at s = 0
-     * for a linear solve to relative residual η < 1, so near a solution s = 1 is taken and the iteration
-     * is the plain Newton step; far from one (a sphere or a pin has just moved the cloth a long way, a
+     * λ += s·Δλ with the longest step s ∈ {s₀, s₀/2, s₀/4, …} that lowers the merit ‖C(x) + α̃λ‖² by
+     * Armijo's rule (Nocedal and Wright 2006, §3.1 and §11.2). Δλ makes the merit's slope −‖b‖²(1 − η)
+     * at s = 0 for a linear solve to relative residual η < 1, so near a solution s = 1 is taken and the
+     * iteration is the plain Newton step; far from one (a sphere or a pin has just moved the cloth a long way, a
      * grab, thin triangles) the linearisation overshoots, and without the search the overshoot grew
      * from step to step until positions overflowed (24 of 300 fuzz cloths under Jacobi-PCG). A step
-     * with no decrease at s = 1/256, or a Δλ that is not finite, is not taken: the iteration then moves
-     * nothing, which is never wrong, only slow.
+     * with no decrease at s = s₀/256, or a Δλ that is not finite, is not taken: the iteration then moves
+     * nothing, which is never wrong, only slow. s₀ ≤ 1 is the trust region ({@link #longestStep}).
      */
     void iterate(Particles particles, SolverContext ctx) {
         linearise(particles, ctx);
@@ -181,7 +192,8 @@ final class GlobalSolver {
         }
         System.arraycopy(x, 0, start, 0, x.length);
         double slope = -dot(b, b) + dot(b, r); // d/ds of ‖F‖² / 2 at s = 0, with F(0) = −b and F'(0) = b − r
-        for (double s = 1; s >= MIN_STEP; s *= 0.5) {
+        double first = longestStep();
+        for (double s = first; s >= first * MIN_STEP; s *= 0.5) {
             for (int k = 0; k < x.length; k++) x[k] = start[k] + s * move[k];
             double merit = meritAt(particles, s);
             if (merit <= merit0 + 2 * ARMIJO * s * slope) {
@@ -191,6 +203,22 @@ final class GlobalSolver {
         }
         System.arraycopy(start, 0, x, 0, x.length);
         rejectedSteps++;
+    }
+
+    /**
+     * The trust region: the largest s ≤ 1 at which no particle moves more than its {@link #reach}. Far
+     * from a solution (a collider has just pushed particles out by its radius) the Newton step asks for
+     * moves of many edge lengths that still lower the merit; taken, they became velocities of tens of
+     * m/s. Gauss–Seidel's projections move a particle at most to its constraint, and so does this.
+     */
+    private double longestStep() {
+        double first = 1;
+        for (int q = 0; q < reach.length; q++) {
+            double mx = move[3 * q], my = move[3 * q + 1], mz = move[3 * q + 2];
+            double m2 = mx * mx + my * my + mz * mz;
+            if (m2 > reach[q] * reach[q]) first = Math.min(first, reach[q] / Math.sqrt(m2));
+        }
+        return first;
     }
 
     /** ‖C(x) + α̃(λ + s·Δλ)‖² at the current positions (a NaN merit compares false: rejected). */

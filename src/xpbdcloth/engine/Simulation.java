@@ -323,7 +323,7 @@ public final class Simulation {
         if (solve != null && solvedFor.matches(type, coloured, threads, sweepListener, g)) return solve;
         if (type != SolverType.GAUSS_SEIDEL) {
             SequentialSweeps rest = new SequentialSweeps(SweepOrder.asBuilt(List.of(attachments)), particles, ctx, contacts, this, sweepListener);
-            solve = new GlobalIterations(g, rest, particles, ctx, this, sweepListener);
+            solve = new GlobalIterations(g, rest, new SequentialSweeps(order, particles, ctx, contacts, this, sweepListener), contacts, particles, ctx, this, sweepListener);
         } else if (!coloured) {
             solve = new SequentialSweeps(order, particles, ctx, contacts, this, sweepListener);
         } else {

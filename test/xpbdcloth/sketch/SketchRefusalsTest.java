@@ -12,13 +12,18 @@ import xpbdcloth.scene.PresetLoader;
 /** The sketch says no where the engine does, and a step that diverges pauses the scene instead of losing it. */
 class SketchRefusalsTest {
 
+    /** A 128² nearly hard cloth hanging from two corners, with the given sweeps (the "solver" entries). */
+    static SketchState bigCloth(String solver) {
+        String text = "{ \"name\": \"big\", \"cloth\": { \"columns\": 128, \"rows\": 128, \"width\": 1, \"height\": 1, \"arealDensity\": 0.2,"
+                + " \"pins\": [\"top-left\", \"top-right\"] }, \"families\": { \"structural\": { \"stiffness\": 1, \"compliance\": 1e-8 } },"
+                + " \"solver\": { \"mode\": \"XPBD\", " + solver + ", \"dt\": 0.02 } }";
+        return new SketchState(PresetLoader.parse("big.json", text));
+    }
+
     /** A cloth the solver cannot hold (128² hard, one sweep, one substep) is said to be tearing, once, with the keys. */
     @Test
     void aTearingClothIsNamed() {
-        String text = "{ \"name\": \"big\", \"cloth\": { \"columns\": 128, \"rows\": 128, \"width\": 1, \"height\": 1, \"arealDensity\": 0.2,"
-                + " \"pins\": [\"top-left\", \"top-right\"] }, \"families\": { \"structural\": { \"stiffness\": 1, \"compliance\": 1e-8 } },"
-                + " \"solver\": { \"mode\": \"XPBD\", \"iterations\": 1, \"dt\": 0.02 } }";
-        SketchState s = new SketchState(PresetLoader.parse("big.json", text));
+        SketchState s = bigCloth("\"iterations\": 1");
         for (int i = 0; i < 90; i++) s.advance();
         assertTrue(s.messageIsError(), s.message());
         assertTrue(s.message().startsWith("the cloth stretches"), s.message());
@@ -35,10 +40,7 @@ class SketchRefusalsTest {
      */
     @Test
     void aKeyThatWouldFreezeTheWindowIsRefused() {
-        String text = "{ \"name\": \"big\", \"cloth\": { \"columns\": 128, \"rows\": 128, \"width\": 1, \"height\": 1, \"arealDensity\": 0.2,"
-                + " \"pins\": [\"top-left\", \"top-right\"] }, \"families\": { \"structural\": { \"stiffness\": 1, \"compliance\": 1e-8 } },"
-                + " \"solver\": { \"mode\": \"XPBD\", \"iterations\": 900, \"substeps\": 2, \"dt\": 0.02 } }";
-        SketchState s = new SketchState(PresetLoader.parse("big.json", text));
+        SketchState s = bigCloth("\"iterations\": 900, \"substeps\": 2");
         s.cycleSolver();
         assertEquals(SolverType.GAUSS_SEIDEL, s.solverType());
         assertEquals(SolverType.GAUSS_SEIDEL, s.first().settings().solver());
