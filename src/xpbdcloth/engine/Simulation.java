@@ -74,6 +74,7 @@ public final class Simulation {
     public double time() { return time; }
     public long stepCount() { return stepCount; }
     public List<Sphere> spheres() { return java.util.Collections.unmodifiableList(spheres); }
+    public List<ExternalForce> forces() { return java.util.Collections.unmodifiableList(forces); }
 
     /**
      * Views of the constraints in solve order (cloth constraints, then attachments), made when first

@@ -40,6 +40,20 @@ class RobustnessCommandsTest {
     }
 
     /** Random presets with every field drawn across its documented range, edges included. */
+    /** The engine fuzzer adds wind and runs two threads too (it used to do neither). */
+    @Test
+    void theFuzzerDrawsWindAndThreads() {
+        int wind = 0, threads = 0;
+        for (long seed = 0; seed < 100; seed++) {
+            xpbdcloth.engine.Simulation sim = Fuzz.build(new java.util.Random(seed), null, SolverType.GAUSS_SEIDEL);
+            if (!sim.forces().isEmpty()) wind++;
+            if (sim.settings().threads() > 1) threads++;
+            sim.close();
+        }
+        assertTrue(wind >= 10 && wind <= 45, "wind in about one case of four: " + wind);
+        assertTrue(threads >= 3 && threads <= 20, "two threads in about one case of ten: " + threads);
+    }
+
     @Test
     void fuzzPresets() {
         StringBuilder failures = new StringBuilder();
