@@ -197,13 +197,31 @@ public final class ClothApp {
         g.background(34, 36, 42);
         camera.update(app.millis() / 1000.0);
         camera.apply(g);
+        List<Scene> running = state.running();
+        // The floor and the shadows first, unlit: they are flat colours, and drawn before the lights are set.
+        if (state.showGrid) {
+            GroundShadow.drawFloor(g, 0);
+            for (int i = 0; i < running.size(); i++) {
+                Scene sc = running.get(i);
+                g.pushMatrix();
+                g.translate((float) offsetX(i), 0, 0);
+                GroundShadow.drawMesh(g, sc.cloth().particles().positions(), sc.cloth().triangles());
+                if (state.showSpheres) for (Sphere s : sc.simulation().spheres()) GroundShadow.drawSphere(g, s);
+                g.popMatrix();
+            }
+        }
         g.ambientLight(78, 80, 88);
-        // World directions (y up): a key light from above, front and left, and a dim fill from behind.
-        g.directionalLight(200, 197, 190, 0.35f, -0.55f, -0.75f);
-        g.directionalLight(55, 58, 66, -0.4f, 0.3f, 0.8f);
+        // World directions of travel (y up): a key light from above, front and left (the shadows' light),
+        // and a dim fill from behind. Under the camera's mirrored y-up transform Processing lights along
+        // the opposite of the direction it is given, so each is passed negated; the rendered frames show
+        // the key light's side lit and its shadow on the far side. Only the key light makes highlights
+        // (Processing's lights have none unless given), and only on the colliders: fabric is matte.
+        g.lightSpecular(210, 206, 198);
+        g.directionalLight(200, 197, 190, -GroundShadow.LIGHT_X, -GroundShadow.LIGHT_Y, -GroundShadow.LIGHT_Z);
+        g.lightSpecular(0, 0, 0);
+        g.directionalLight(55, 58, 66, 0.4f, -0.3f, -0.8f);
         camera.eye(scratch);
         if (state.showGrid) renderer.drawGround(g, 0);
-        List<Scene> running = state.running();
         for (int i = 0; i < running.size(); i++) {
             Scene sc = running.get(i);
             double ox = offsetX(i);

@@ -19,10 +19,13 @@ import xpbdcloth.scene.Scene;
 final class ClothRenderer {
     /** Front and back colours of the cloth (RGB). */
     static final int[] FRONT = {88, 148, 222}, BACK = {236, 172, 92};
+    /** The colliders' colour (RGB): glazed ceramic, drawn with a specular highlight. */
+    static final int[] COLLIDER = {214, 206, 192};
     /** Strain at which the wireframe is fully red (stretched) or blue (compressed). */
     static final double FULL_COLOUR_STRAIN = 0.05;
 
     private double[] normals = new double[0];
+    private final FoldShading folds = new FoldShading();
 
     /** Area-weighted vertex normals, into an array kept between frames. */
     private void computeNormals(Cloth cloth) {
@@ -40,7 +43,10 @@ final class ClothRenderer {
         boolean[] dark = checker(cloth);
         double[] x = cloth.particles().positions();
         int[] t = cloth.triangles();
+        folds.compute(x, t, normals);
         g.noStroke();
+        g.specular(0); // fabric is matte; the colliders shine
+        g.shininess(1);
         g.beginShape(PConstants.TRIANGLES);
         for (int k = 0; k < t.length; k += 3) {
             int a = 3 * t[k], b = 3 * t[k + 1], c = 3 * t[k + 2];
@@ -50,11 +56,11 @@ final class ClothRenderer {
             boolean front = nx * (eyeX - x[a]) + ny * (eyeY - x[a + 1]) + nz * (eyeZ - x[a + 2]) >= 0;
             float sign = front ? 1 : -1;
             int[] col = front ? FRONT : BACK;
+            float[] light = front ? folds.front : folds.back;
             float shade = dark[k / 3] ? CHECKER_SHADE : 1;
-            g.fill(shade * col[0], shade * col[1], shade * col[2]);
-            vertex(g, x, a, sign);
-            vertex(g, x, b, sign);
-            vertex(g, x, c, sign);
+            vertex(g, x, a, sign, shade * light[t[k]], col);
+            vertex(g, x, b, sign, shade * light[t[k + 1]], col);
+            vertex(g, x, c, sign, shade * light[t[k + 2]], col);
         }
         g.endShape();
     }
@@ -111,7 +117,9 @@ final class ClothRenderer {
         g.endShape();
     }
 
-    private void vertex(PGraphics g, double[] x, int k, float sign) {
+    /** Vertex k/3 with its normal (flipped for the back), in colour col darkened by shade. */
+    private void vertex(PGraphics g, double[] x, int k, float sign, float shade, int[] col) {
+        g.fill(shade * col[0], shade * col[1], shade * col[2]);
         g.normal(sign * (float) normals[k], sign * (float) normals[k + 1], sign * (float) normals[k + 2]);
         g.vertex((float) x[k], (float) x[k + 1], (float) x[k + 2]);
     }
@@ -167,9 +175,13 @@ final class ClothRenderer {
         g.pushMatrix();
         g.translate((float) s.centreX(), (float) s.centreY(), (float) s.centreZ());
         g.noStroke();
-        g.fill(150, 152, 158);
+        // Glazed ceramic, unlike the matte cloth: a warm white with a tight highlight.
+        g.fill(COLLIDER[0], COLLIDER[1], COLLIDER[2]);
+        g.specular(230, 226, 215);
+        g.shininess(40);
         g.sphereDetail(40);
         g.sphere((float) s.radius() * 0.995f);
+        g.specular(0);
         double wl = Math.sqrt(s.omegaX() * s.omegaX() + s.omegaY() * s.omegaY() + s.omegaZ() * s.omegaZ());
         if (wl > 0) g.rotate((float) s.spinAngle(), (float) (s.omegaX() / wl), (float) (s.omegaY() / wl), (float) (s.omegaZ() / wl));
         g.noFill();
@@ -194,17 +206,17 @@ final class ClothRenderer {
         g.endShape();
     }
 
-    /** A 4 m square grid on the ground (y = 0), lines every 25 cm. */
+    /** A 4 m square grid on the ground, lines every 25 cm, drawn just above the floor and its shadows. */
     void drawGround(PGraphics g, double centreX) {
         g.strokeWeight(1);
-        g.stroke(90, 94, 104);
+        g.stroke(78, 82, 92);
         g.beginShape(PConstants.LINES);
-        float half = 2f;
+        float half = 2f, y = 2 * GroundShadow.LIFT;
         float cx = (float) (Math.round(centreX * 4) / 4.0);
         for (int i = -8; i <= 8; i++) {
             float u = i * 0.25f;
-            g.vertex(cx + u, 0, -half); g.vertex(cx + u, 0, half);
-            g.vertex(cx - half, 0, u); g.vertex(cx + half, 0, u);
+            g.vertex(cx + u, y, -half); g.vertex(cx + u, y, half);
+            g.vertex(cx - half, y, u); g.vertex(cx + half, y, u);
         }
         g.endShape();
     }

@@ -63,7 +63,7 @@ public final class KeyBindings {
         b.add(new KeyBinding('x', "wireframe coloured by strain", s -> s.wireframe = !s.wireframe, s -> s.wireframe));
         b.add(new KeyBinding('o', "particles (pinned in orange)", s -> s.showParticles = !s.showParticles, s -> s.showParticles));
         b.add(new KeyBinding('s', "spheres", s -> s.showSpheres = !s.showSpheres, s -> s.showSpheres));
-        b.add(new KeyBinding('g', "ground grid", s -> s.showGrid = !s.showGrid, s -> s.showGrid));
+        b.add(new KeyBinding('g', "ground: floor, grid and shadows", s -> s.showGrid = !s.showGrid, s -> s.showGrid));
         b.add(new KeyBinding('h', "this help", s -> s.showHelp = !s.showHelp, s -> s.showHelp));
         b.add(new KeyBinding('q', "quit (as closing the window does)", s -> s.quitRequested = true, s -> s.quitRequested));
         return Collections.unmodifiableList(b);
