@@ -27,7 +27,10 @@ class SketchRefusalsTest {
         for (int i = 0; i < 90; i++) s.advance();
         assertTrue(s.messageIsError(), s.message());
         assertTrue(s.message().startsWith("the cloth stretches"), s.message());
-        assertTrue(s.message().contains("press u or i for more, or load a smaller cloth"), s.message());
+        assertTrue(s.message().contains("press u or i for more, pin an edge instead of corners, or load a smaller cloth"), s.message());
+        // 512² at 8 × 16: twice the sweeps would be over the work limit, so the notice does not offer them.
+        assertTrue(SketchState.tearingAdvice(512 * 512, 8, 16, 0, SolverType.GAUSS_SEIDEL).startsWith("the work limit allows no more sweeps"));
+        assertTrue(SketchState.tearingAdvice(128 * 128, 1, 1, 0, SolverType.GAUSS_SEIDEL).startsWith("press u or i for more"));
         SketchState fine = new SketchState(PresetLoader.builtIn("hanging"));
         for (int i = 0; i < 90; i++) fine.advance();
         assertFalse(fine.message().startsWith("the cloth stretches"), "the shipped hanging cloth holds: " + fine.message());
