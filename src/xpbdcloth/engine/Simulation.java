@@ -37,6 +37,7 @@ public final class Simulation {
     /** The views handed out by {@link #attach}, re-indexed when one is released. */
     private final List<AttachmentConstraint> grabs = new ArrayList<>();
     private final List<Sphere> spheres = new ArrayList<>();
+    private final List<Plane> planes = new ArrayList<>();
     private final ContactSet contacts = new ContactSet();
     private final List<Kinematics> kinematics = new ArrayList<>();
     private final List<ExternalForce> forces = new ArrayList<>();
@@ -74,6 +75,7 @@ public final class Simulation {
     public double time() { return time; }
     public long stepCount() { return stepCount; }
     public List<Sphere> spheres() { return java.util.Collections.unmodifiableList(spheres); }
+    public List<Plane> planes() { return java.util.Collections.unmodifiableList(planes); }
     public List<ExternalForce> forces() { return java.util.Collections.unmodifiableList(forces); }
 
     /**
@@ -171,7 +173,15 @@ public final class Simulation {
     public Simulation add(Sphere s) {
         if (s == null) throw new IllegalArgumentException("sphere must not be null, was null");
         spheres.add(s);
-        contacts.reserve(particles.count(), spheres.size());
+        contacts.reserve(particles.count(), spheres.size() + planes.size());
+        return this;
+    }
+
+    /** Adds a fixed plane (a floor, a wall, a slope); its contacts are found each substep like the spheres'. */
+    public Simulation add(Plane plane) {
+        if (plane == null) throw new IllegalArgumentException("plane must not be null, was null");
+        planes.add(plane);
+        contacts.reserve(particles.count(), spheres.size() + planes.size());
         return this;
     }
 
@@ -290,7 +300,7 @@ public final class Simulation {
             observer.after(Stage.PREDICT);
             moveKinematics(t, h);
             observer.after(Stage.KINEMATICS);
-            contacts.collide(particles, spheres);
+            contacts.collide(particles, spheres, planes);
             observer.after(Stage.COLLIDE);
             for (int b = 0, nb = body.size(); b < nb; b++) body.get(b).beginSubstep(ctx);
             attachments.beginSubstep(ctx);

@@ -13,7 +13,7 @@ package xpbdcloth.engine;
  * velocity at the contact point is v_s = v_sphere + ω × (r n). With Δx_t its part tangent to the sphere and
  * d = |Δx_n| the normal correction just applied:
  * static friction removes Δx_t entirely while |Δx_t| &lt; μₛ d; otherwise kinetic friction removes
- * Δx_t · min(μₖ d / |Δx_t|, 1).
+ * Δx_t · min(μₖ d / |Δx_t|, 1) ({@link CoulombFriction}, shared with the plane contacts).
  * Source: Müller et al. 2007 §4.3 (collision constraints); friction as position-level Coulomb friction in
  * Macklin et al. 2014, "Unified Particle Physics for Real-Time Applications", eq. (24)–(25).
  * Degenerate case: a particle exactly at the centre has no normal; it is pushed out along +y (up), a fixed
@@ -79,15 +79,7 @@ public final class SphereCollisionConstraint {
         double vsx = s.vx + s.omegaY * rz - s.omegaZ * ry;
         double vsy = s.vy + s.omegaZ * rx - s.omegaX * rz;
         double vsz = s.vz + s.omegaX * ry - s.omegaY * rx;
-        double rdx = x[k] - p.prev[k] - h * vsx, rdy = x[k + 1] - p.prev[k + 1] - h * vsy, rdz = x[k + 2] - p.prev[k + 2] - h * vsz;
-        double along = rdx * nx + rdy * ny + rdz * nz;
-        double tx = rdx - along * nx, ty = rdy - along * ny, tz = rdz - along * nz;
-        double slip = Math.sqrt(tx * tx + ty * ty + tz * tz);
-        if (slip == 0) return dLambda;
-        double removed = slip < s.staticFriction * normalCorrection
-                ? 1.0
-                : Math.min(s.kineticFriction * normalCorrection / slip, 1.0);
-        x[k] -= removed * tx; x[k + 1] -= removed * ty; x[k + 2] -= removed * tz;
+        CoulombFriction.apply(p, i, nx, ny, nz, normalCorrection, vsx, vsy, vsz, h, s.staticFriction, s.kineticFriction);
         return dLambda;
     }
 }

@@ -10,8 +10,9 @@
  *       rope links), {@link xpbdcloth.engine.ShearBlock} (the angle between two edges at a vertex),
  *       {@link xpbdcloth.engine.BendBlock} (Kelager's triangle bending), {@link xpbdcloth.engine.AttachmentBlock}
  *       (a particle held at a moving target: the mouse grab); the views {@code DistanceConstraint} and so on.</li>
- *   <li>{@link xpbdcloth.engine.SphereCollisionConstraint}: sphere contact with Coulomb friction and ω × r (the
- *       projection the transient contacts of {@code ContactSet} use).</li>
+ *   <li>{@link xpbdcloth.engine.SphereCollisionConstraint}, {@code PlaneCollisionConstraint}: sphere and plane
+ *       contacts (the projections the transient contacts of {@code ContactSet} use), with the one Coulomb
+ *       friction law of {@code CoulombFriction}; {@link xpbdcloth.engine.Plane}: fixed planes.</li>
  *   <li>{@link xpbdcloth.engine.Simulation}: the step, stage by stage ({@link xpbdcloth.engine.Stage}): predict,
  *       kinematics, collide (transient contacts, {@code ContactSet}), solve ({@code SolveStage}: sequential,
  *       parallel coloured or global, over a {@code SweepOrder} of blocks), update velocities, velocity pass.</li>

@@ -24,12 +24,14 @@ public final class Preset {
     public final Map<ConstraintFamily, Material> families;
     public final Solver solver;
     public final List<SphereSpec> spheres;
+    /** The other colliders (so far planes: floors, walls, slopes). */
+    public final List<PlaneSpec> planes;
     public final List<PinMotion> pinMotions;
     /** Null when the preset has no wind. */
     public final WindSpec wind;
 
     Preset(String source, String name, String description, Cloth cloth, Map<ConstraintFamily, Material> families, Solver solver,
-           List<SphereSpec> spheres, List<PinMotion> pinMotions, WindSpec wind) {
+           List<SphereSpec> spheres, List<PlaneSpec> planes, List<PinMotion> pinMotions, WindSpec wind) {
         this.source = source;
         this.name = name;
         this.description = description;
@@ -37,6 +39,7 @@ public final class Preset {
         this.families = Collections.unmodifiableMap(new EnumMap<>(families));
         this.solver = solver;
         this.spheres = Collections.unmodifiableList(spheres);
+        this.planes = Collections.unmodifiableList(planes);
         this.pinMotions = Collections.unmodifiableList(pinMotions);
         this.wind = wind;
     }
@@ -109,6 +112,17 @@ public final class Preset {
                double damping, xpbdcloth.engine.SolverType type) {
             this.mode = mode; this.iterations = iterations; this.substeps = substeps; this.dt = dt;
             this.mullerCorrection = mullerCorrection; this.gravity = gravity; this.damping = damping; this.type = type;
+        }
+    }
+
+    /** A fixed plane collider: a point of its surface and the normal of the side the cloth stays on. */
+    public static final class PlaneSpec {
+        public final double[] point, normal;
+        public final double margin, staticFriction, kineticFriction;
+
+        PlaneSpec(double[] point, double[] normal, double margin, double staticFriction, double kineticFriction) {
+            this.point = point; this.normal = normal; this.margin = margin;
+            this.staticFriction = staticFriction; this.kineticFriction = kineticFriction;
         }
     }
 

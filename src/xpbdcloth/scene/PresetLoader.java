@@ -187,7 +187,7 @@ public final class PresetLoader {
         }
 
         Preset preset(Node root) {
-            object(root, Set.of("name", "description", "cloth", "families", "solver", "spheres", "pinMotions", "wind"));
+            object(root, Set.of("name", "description", "cloth", "families", "solver", "spheres", "colliders", "pinMotions", "wind"));
             String name = string(required(root, "name"));
             Node d = optional(root, "description");
             String description = d == null ? "" : string(d);
@@ -197,14 +197,17 @@ public final class PresetLoader {
             List<Preset.SphereSpec> spheres = new ArrayList<>();
             Node ss = optional(root, "spheres");
             if (ss != null) for (Node s : array(ss, Limits.MAX_SPHERES)) spheres.add(sphere(s));
+            List<Preset.PlaneSpec> planes = new ArrayList<>();
+            Node cs = optional(root, "colliders");
+            if (cs != null) for (Node c : array(cs, Limits.MAX_SPHERES)) planes.add(collider(c));
             List<Preset.PinMotion> motions = new ArrayList<>();
             Node ms = optional(root, "pinMotions");
             if (ms != null) for (Node m : array(ms, Limits.MAX_PIN_MOTIONS)) motions.add(pinMotion(m, cloth));
             Node w = optional(root, "wind");
             long particles = cloth.mesh != null ? cloth.mesh.vertexCount() : (long) cloth.columns * cloth.rows;
-            String tooMuch = Limits.workProblem(particles, solver.iterations, solver.substeps, spheres.size(), solver.type != xpbdcloth.engine.SolverType.GAUSS_SEIDEL);
+            String tooMuch = Limits.workProblem(particles, solver.iterations, solver.substeps, spheres.size() + planes.size(), solver.type != xpbdcloth.engine.SolverType.GAUSS_SEIDEL);
             if (tooMuch != null) throw fail("solver", tooMuch);
-            return new Preset(file, name, description, cloth, families, solver, spheres, motions, w == null ? null : wind(w));
+            return new Preset(file, name, description, cloth, families, solver, spheres, planes, motions, w == null ? null : wind(w));
         }
 
         Preset.Cloth cloth(Node n) {
@@ -373,6 +376,23 @@ public final class PresetLoader {
             for (xpbdcloth.engine.SolverType t : xpbdcloth.engine.SolverType.values())
                 if (t.name().replace('_', '-').equalsIgnoreCase(s)) return t;
             throw fail(n.path, "must be one of gauss-seidel, jacobi-pcg, multigrid-pcg, was \"" + s + "\"");
+        }
+
+        /** A collider of the "colliders" list: so far a plane (spheres are listed under "spheres"). */
+        Preset.PlaneSpec collider(Node n) {
+            object(n, Set.of("type", "point", "normal", "margin", "staticFriction", "kineticFriction"));
+            Node t = required(n, "type");
+            if (!string(t).equals("plane"))
+                throw fail(t.path, "must be \"plane\" (spheres are listed under \"spheres\"; boxes and capsules are not built yet), was \"" + string(t) + "\"");
+            double[] point = vector(required(n, "point"), Limits.POSITION);
+            Node nn = required(n, "normal");
+            double[] normal = vector(nn, Limits.NORMAL);
+            double len = Math.sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+            if (len < 1e-3) throw fail(nn.path, "must not be (almost) zero, had length " + len);
+            Node m = optional(n, "margin");
+            double margin = m == null ? 0 : number(m, Limits.MARGIN);
+            return new Preset.PlaneSpec(point, normal, margin, number(required(n, "staticFriction"), Limits.FRICTION),
+                    number(required(n, "kineticFriction"), Limits.FRICTION));
         }
 
         Preset.SphereSpec sphere(Node n) {

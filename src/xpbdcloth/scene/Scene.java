@@ -4,6 +4,7 @@ import xpbdcloth.engine.Cloth;
 import xpbdcloth.engine.ClothBuilder;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.MeshClothBuilder;
+import xpbdcloth.engine.Plane;
 import xpbdcloth.engine.SolverSettings;
 import xpbdcloth.engine.Simulation;
 import xpbdcloth.engine.Sphere;
@@ -33,6 +34,8 @@ public final class Scene {
                 .damping(s.damping).solver(s.type);
         simulation = cloth.simulation(settings);
 
+        for (Preset.PlaneSpec pl : preset.planes)
+            simulation.add(new Plane(pl.point, pl.normal, pl.margin, pl.staticFriction, pl.kineticFriction));
         for (Preset.SphereSpec sp : preset.spheres) {
             Sphere sphere = new Sphere(path(sp), sp.radius, sp.margin, sp.staticFriction, sp.kineticFriction)
                     .spin(sp.angularVelocity[0], sp.angularVelocity[1], sp.angularVelocity[2]);

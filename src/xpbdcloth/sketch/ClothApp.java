@@ -236,6 +236,7 @@ public final class ClothApp {
             }
             renderer.drawParticles(g, sc.cloth().particles(), state.showParticles);
             if (state.showSpheres) for (Sphere s : sc.simulation().spheres()) renderer.drawSphere(g, s);
+            if (state.showSpheres) for (xpbdcloth.engine.Plane pl : sc.simulation().planes()) renderer.drawPlane(g, pl, sc.cloth());
             g.popMatrix();
         }
         long h0 = threadBean.getCurrentThreadAllocatedBytes();

@@ -6,6 +6,7 @@ import xpbdcloth.engine.Cloth;
 import xpbdcloth.engine.ConstraintBlock;
 import xpbdcloth.engine.DistanceBlock;
 import xpbdcloth.engine.Particles;
+import xpbdcloth.engine.Plane;
 import xpbdcloth.engine.Sphere;
 import xpbdcloth.mesh.VertexNormals;
 import xpbdcloth.scene.Scene;
@@ -192,6 +193,33 @@ final class ClothRenderer {
         g.stroke(250, 220, 80);
         ring(g, r, 1);
         g.popMatrix();
+    }
+
+    /**
+     * A plane collider as a 1.5 m square of it under the cloth (centred at the foot of the cloth's rest
+     * centre), in the colliders' colour, matte: a slope or a floor should not shine. An infinite plane
+     * drawn large hides the scene from most camera angles.
+     */
+    void drawPlane(PGraphics g, Plane p, Cloth near) {
+        xpbdcloth.mesh.ClothMesh m = near.mesh();
+        double ox = (m.min(0) + m.max(0)) / 2, oy = (m.min(1) + m.max(1)) / 2, oz = (m.min(2) + m.max(2)) / 2;
+        double nx = p.normalX(), ny = p.normalY(), nz = p.normalZ(), d = p.distance(ox, oy, oz);
+        double cx = ox - d * nx, cy = oy - d * ny, cz = oz - d * nz;
+        // Two directions in the plane: u ⟂ n (from whichever axis is least along n), v = n × u.
+        double ax = Math.abs(nx) < 0.9 ? 1 : 0, ay = ax == 1 ? 0 : 1;
+        double ux = ay * nz, uy = -ax * nz, uz = ax * ny - ay * nx, ul = Math.sqrt(ux * ux + uy * uy + uz * uz);
+        ux /= ul; uy /= ul; uz /= ul;
+        double vx = ny * uz - nz * uy, vy = nz * ux - nx * uz, vz = nx * uy - ny * ux;
+        double h = 0.75;
+        g.noStroke();
+        g.fill(COLLIDER[0] * 0.55f, COLLIDER[1] * 0.55f, COLLIDER[2] * 0.55f);
+        g.beginShape(PConstants.QUADS);
+        g.normal((float) nx, (float) ny, (float) nz);
+        for (int k = 0; k < 4; k++) {
+            double su = (k == 0 || k == 3) ? -h : h, sv = k < 2 ? -h : h;
+            g.vertex((float) (cx + su * ux + sv * vx), (float) (cy + su * uy + sv * vy), (float) (cz + su * uz + sv * vz));
+        }
+        g.endShape();
     }
 
     /** A circle of radius r in the xz plane (plane 0) or the xy plane (plane 1). */

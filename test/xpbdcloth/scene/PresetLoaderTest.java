@@ -49,6 +49,21 @@ class PresetLoaderTest {
         assertEquals(64, PresetLoader.parse("g.json", global.replace("\"columns\": 4, \"rows\": 4", "\"columns\": 64, \"rows\": 64")).cloth.columns);
     }
 
+    /** Plane colliders: a floor loads into the scene's simulation; a box (not built yet) and a zero normal are named. */
+    @Test
+    void planeCollidersLoadAndBadOnesAreNamed() {
+        String floor = valid().replace(" \"solver\":", " \"colliders\": [{ \"type\": \"plane\", \"point\": [0, -1, 0], \"normal\": [0, 1, 0],"
+                + " \"margin\": 0.005, \"staticFriction\": 0.5, \"kineticFriction\": 0.4 }], \"solver\":");
+        Scene scene = Scene.of(PresetLoader.parse("floor.json", floor));
+        assertEquals(1, scene.simulation().planes().size());
+        assertEquals(1.005, scene.simulation().planes().get(0).distance(0, 0.005, 0), 1e-12, "a floor at y = -1");
+        PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse("box.json", floor.replace("\"type\": \"plane\"", "\"type\": \"box\"")));
+        assertEquals("colliders[0].type", e.field(), e.getMessage());
+        assertTrue(e.problem().contains("boxes and capsules are not built yet"), e.getMessage());
+        e = assertThrows(PresetException.class, () -> PresetLoader.parse("flat.json", floor.replace("\"normal\": [0, 1, 0]", "\"normal\": [0, 0, 0]")));
+        assertEquals("colliders[0].normal", e.field(), e.getMessage());
+    }
+
     /** A near miss of a built-in name says which one, and lists them. */
     @Test
     void aMistypedSceneNameSuggestsTheNearest() {
