@@ -38,16 +38,23 @@ final class ContactSet {
     }
 
     /** The collide stage: this substep's candidates, from the predicted positions and placed colliders. */
-    void collide(Particles p, List<Sphere> spheres, List<Plane> planes) {
+    void collide(Particles p, List<Sphere> spheres, List<Plane> planes, double h) {
         count = 0;
         final double[] x = p.x, prev = p.prev, w = p.w;
         for (int s = 0, ns = spheres.size(); s < ns; s++) {
             Sphere sp = spheres.get(s);
             double reach = sp.radius + sp.margin + SLACK * sp.radius;
+            // A fast sphere's candidates lie along its path over the substep, from c − h·v to c.
+            boolean fast = sp.isFast(h);
+            double ux = h * sp.vx, uy = h * sp.vy, uz = h * sp.vz, uu = ux * ux + uy * uy + uz * uz;
             for (int i = 0, n = p.count(); i < n; i++) {
                 if (w[i] == 0) continue;
                 int k = 3 * i;
                 double dx = x[k] - sp.cx, dy = x[k + 1] - sp.cy, dz = x[k + 2] - sp.cz;
+                if (fast) { // distance to the path: dx, dy, dz from the path's nearest point
+                    double t = Math.max(0, Math.min(1, (dx * ux + dy * uy + dz * uz) / -uu));
+                    dx += t * ux; dy += t * uy; dz += t * uz;
+                }
                 double mx = x[k] - prev[k], my = x[k + 1] - prev[k + 1], mz = x[k + 2] - prev[k + 2];
                 double r = reach + Math.sqrt(mx * mx + my * my + mz * mz);
                 if (dx * dx + dy * dy + dz * dz < r * r) { particle[count] = i; sphere[count] = sp; plane[count] = null; count++; }

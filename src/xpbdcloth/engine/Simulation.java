@@ -300,7 +300,7 @@ public final class Simulation {
             observer.after(Stage.PREDICT);
             moveKinematics(t, h);
             observer.after(Stage.KINEMATICS);
-            contacts.collide(particles, spheres, planes);
+            contacts.collide(particles, spheres, planes, h);
             observer.after(Stage.COLLIDE);
             for (int b = 0, nb = body.size(); b < nb; b++) body.get(b).beginSubstep(ctx);
             attachments.beginSubstep(ctx);

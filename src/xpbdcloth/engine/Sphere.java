@@ -55,6 +55,15 @@ public final class Sphere {
         spinAngle += Math.sqrt(omegaX * omegaX + omegaY * omegaY + omegaZ * omegaZ) * h;
     }
 
+    /**
+     * Whether the centre moved more than a quarter of the radius over the last substep of length h: then
+     * contacts are found and solved along the sphere's path, not only at its end (no tunnelling).
+     */
+    boolean isFast(double h) {
+        double step2 = (vx * vx + vy * vy + vz * vz) * h * h, quarter = ContactSet.SLACK * radius;
+        return step2 > quarter * quarter;
+    }
+
     public double radius() { return radius; }
     public double margin() { return margin; }
     public double staticFriction() { return staticFriction; }
