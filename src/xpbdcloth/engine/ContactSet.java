@@ -5,7 +5,8 @@ import java.util.List;
 /**
  * This substep's contacts, found by the collide stage and projected after every sweep of the solve: a
  * transient list, not one permanent object per particle and collider. Flat arrays sized once for the
- * worst case (every particle against every sphere), so finding and solving allocate nothing.
+ * worst case (every particle against every collider), so finding and solving allocate nothing. Each
+ * {@link Collider} lists its own candidates and projects its own contacts; this set only holds them.
  *
  * <p>What counts as a contact: a particle closer to a sphere's surface (radius + margin) than
  * {@link #SLACK} of the radius plus the distance the particle itself moved in the prediction. Its
@@ -23,9 +24,7 @@ final class ContactSet {
     static final double PLANE_SLACK = 0.05;
 
     private int[] particle = new int[0];
-    /** Contact k is with sphere[k], or, where that is null, with plane[k]. */
-    private Sphere[] sphere = new Sphere[0];
-    private Plane[] plane = new Plane[0];
+    private Collider[] with = new Collider[0];
     private int count;
 
     int count() { return count; }
@@ -34,52 +33,30 @@ final class ContactSet {
     /** Makes room for every particle against every collider (when colliders are added, never during a step). */
     void reserve(int particles, int colliders) {
         int n = particles * colliders;
-        if (particle.length < n) { particle = new int[n]; sphere = new Sphere[n]; plane = new Plane[n]; }
+        if (particle.length < n) { particle = new int[n]; with = new Collider[n]; }
     }
 
-    /** The collide stage: this substep's candidates, from the predicted positions and placed colliders. */
+    /** The collide stage: this substep's candidates (the spheres' first), from the predicted positions and placed colliders. */
     void collide(Particles p, List<Sphere> spheres, List<Plane> planes, double h) {
         count = 0;
-        final double[] x = p.x, prev = p.prev, w = p.w;
-        for (int s = 0, ns = spheres.size(); s < ns; s++) {
-            Sphere sp = spheres.get(s);
-            double reach = sp.radius + sp.margin + SLACK * sp.radius;
-            // A fast sphere's candidates lie along its path over the substep, from c − h·v to c.
-            boolean fast = sp.isFast(h);
-            double ux = h * sp.vx, uy = h * sp.vy, uz = h * sp.vz, uu = ux * ux + uy * uy + uz * uz;
-            for (int i = 0, n = p.count(); i < n; i++) {
-                if (w[i] == 0) continue;
-                int k = 3 * i;
-                double dx = x[k] - sp.cx, dy = x[k + 1] - sp.cy, dz = x[k + 2] - sp.cz;
-                if (fast) { // distance to the path: dx, dy, dz from the path's nearest point
-                    double t = Math.max(0, Math.min(1, (dx * ux + dy * uy + dz * uz) / -uu));
-                    dx += t * ux; dy += t * uy; dz += t * uz;
-                }
-                double mx = x[k] - prev[k], my = x[k + 1] - prev[k + 1], mz = x[k + 2] - prev[k + 2];
-                double r = reach + Math.sqrt(mx * mx + my * my + mz * mz);
-                if (dx * dx + dy * dy + dz * dz < r * r) { particle[count] = i; sphere[count] = sp; plane[count] = null; count++; }
-            }
-        }
-        for (int s = 0, ns = planes.size(); s < ns; s++) {
-            Plane pl = planes.get(s);
-            for (int i = 0, n = p.count(); i < n; i++) {
-                if (w[i] == 0) continue;
-                int k = 3 * i;
-                double mx = x[k] - prev[k], my = x[k + 1] - prev[k + 1], mz = x[k + 2] - prev[k + 2];
-                double reach = pl.margin + PLANE_SLACK + Math.sqrt(mx * mx + my * my + mz * mz);
-                if (pl.distance(x[k], x[k + 1], x[k + 2]) < reach) { particle[count] = i; sphere[count] = null; plane[count] = pl; count++; }
-            }
-        }
+        for (int s = 0, ns = spheres.size(); s < ns; s++) spheres.get(s).findContacts(p, h, this);
+        for (int s = 0, ns = planes.size(); s < ns; s++) planes.get(s).findContacts(p, h, this);
+    }
+
+    /** A candidate: particle i against collider c. */
+    void add(int i, Collider c) {
+        particle[count] = i;
+        with[count] = c;
+        count++;
     }
 
     /** One Gauss–Seidel pass over the contacts. */
     void project(Particles p, SolverContext ctx) {
-        for (int k = 0; k < count; k++) project(p, ctx, k);
+        for (int k = 0; k < count; k++) with[k].project(p, particle[k], ctx.h);
     }
 
     /** Contact k alone (the probe's replay checks after each). */
     void project(Particles p, SolverContext ctx, int k) {
-        if (sphere[k] != null) SphereCollisionConstraint.project(p, particle[k], sphere[k], ctx.h);
-        else PlaneCollisionConstraint.project(p, particle[k], plane[k], ctx.h);
+        with[k].project(p, particle[k], ctx.h);
     }
 }

@@ -5,7 +5,7 @@ package xpbdcloth.engine;
  * slope at any angle. The surface is n·x = d with n a unit normal; particles keep {@code margin} (the
  * cloth's half thickness) above it, and slide on it by Coulomb friction. Infinite mass: never pushed back.
  */
-public final class Plane {
+public final class Plane extends Collider {
     final double nx, ny, nz, offset;
     final double margin, staticFriction, kineticFriction;
 
@@ -38,6 +38,20 @@ public final class Plane {
 
     /** The signed distance of (x, y, z) from the surface along the normal, m (negative below). */
     public double distance(double x, double y, double z) { return nx * x + ny * y + nz * z - offset; }
+
+    /** Particles within margin + {@link ContactSet#PLANE_SLACK} + their own motion of the surface (or below it). */
+    @Override void findContacts(Particles p, double h, ContactSet contacts) {
+        final double[] x = p.x, prev = p.prev, w = p.w;
+        for (int i = 0, n = p.count(); i < n; i++) {
+            if (w[i] == 0) continue;
+            int k = 3 * i;
+            double mx = x[k] - prev[k], my = x[k + 1] - prev[k + 1], mz = x[k + 2] - prev[k + 2];
+            double reach = margin + ContactSet.PLANE_SLACK + Math.sqrt(mx * mx + my * my + mz * mz);
+            if (distance(x[k], x[k + 1], x[k + 2]) < reach) contacts.add(i, this);
+        }
+    }
+
+    @Override void project(Particles p, int i, double h) { PlaneCollisionConstraint.project(p, i, this, h); }
 
     public double normalX() { return nx; }
     public double normalY() { return ny; }

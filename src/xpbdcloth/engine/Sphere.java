@@ -4,7 +4,7 @@ package xpbdcloth.engine;
  * A kinematic sphere: it moves along a {@link SpherePath} and spins with angular velocity ω, pushes
  * particles out and drags them by Coulomb friction, and is never pushed back (infinite mass).
  */
-public final class Sphere {
+public final class Sphere extends Collider {
     private final SpherePath path;
     final double radius;
     /** Cloth thickness kept between particle centres and the surface, m. */
@@ -63,6 +63,29 @@ public final class Sphere {
         double step2 = (vx * vx + vy * vy + vz * vz) * h * h, quarter = ContactSet.SLACK * radius;
         return step2 > quarter * quarter;
     }
+
+    /** Particles within reach: radius + margin + {@link ContactSet#SLACK} of the radius + their own motion, from the centre (from the swept path when fast). */
+    @Override void findContacts(Particles p, double h, ContactSet contacts) {
+        final double[] x = p.x, prev = p.prev, w = p.w;
+        double reach = radius + margin + ContactSet.SLACK * radius;
+        // A fast sphere's candidates lie along its path over the substep, from c − h·v to c.
+        boolean fast = isFast(h);
+        double ux = h * vx, uy = h * vy, uz = h * vz, uu = ux * ux + uy * uy + uz * uz;
+        for (int i = 0, n = p.count(); i < n; i++) {
+            if (w[i] == 0) continue;
+            int k = 3 * i;
+            double dx = x[k] - cx, dy = x[k + 1] - cy, dz = x[k + 2] - cz;
+            if (fast) { // distance to the path: dx, dy, dz from the path's nearest point
+                double t = Math.max(0, Math.min(1, (dx * ux + dy * uy + dz * uz) / -uu));
+                dx += t * ux; dy += t * uy; dz += t * uz;
+            }
+            double mx = x[k] - prev[k], my = x[k + 1] - prev[k + 1], mz = x[k + 2] - prev[k + 2];
+            double r = reach + Math.sqrt(mx * mx + my * my + mz * mz);
+            if (dx * dx + dy * dy + dz * dz < r * r) contacts.add(i, this);
+        }
+    }
+
+    @Override void project(Particles p, int i, double h) { SphereCollisionConstraint.project(p, i, this, h); }
 
     public double radius() { return radius; }
     public double margin() { return margin; }

@@ -12,7 +12,8 @@
  *       (a particle held at a moving target: the mouse grab); the views {@code DistanceConstraint} and so on.</li>
  *   <li>{@link xpbdcloth.engine.SphereCollisionConstraint}, {@code PlaneCollisionConstraint}: sphere and plane
  *       contacts (the projections the transient contacts of {@code ContactSet} use), with the one Coulomb
- *       friction law of {@code CoulombFriction}; {@link xpbdcloth.engine.Plane}: fixed planes.</li>
+ *       friction law of {@code CoulombFriction}; {@link xpbdcloth.engine.Plane}: fixed planes; both are a
+ *       {@link xpbdcloth.engine.Collider}, which finds and projects its own contacts.</li>
  *   <li>{@link xpbdcloth.engine.Simulation}: the step, stage by stage ({@link xpbdcloth.engine.Stage}): predict,
  *       kinematics, collide (transient contacts, {@code ContactSet}), solve ({@code SolveStage}: sequential,
  *       parallel coloured or global, over a {@code SweepOrder} of blocks), update velocities, velocity pass.</li>
