@@ -13,14 +13,23 @@ import java.util.Arrays;
  * a point of infinite mass. It uses the simulation's mode like every other constraint, so a grabbed PBD
  * cloth and a grabbed XPBD cloth respond to the hand in their own way. Degenerate case: at the target
  * (C = 0) there is no direction and nothing to do.
+ *
+ * <p>The target glides: moved between steps ({@link #moveTarget}), it travels there along a straight line
+ * over the step's substeps, as a hand moves continuously. A target that jumped at the step's start was
+ * reached in the first substep and then held still, so a particle let go after a fast drag left at rest
+ * instead of with the hand's velocity: the cloth could not be thrown.
  */
 public final class AttachmentBlock extends ConstraintBlock {
-    /** t per constraint, xyz interleaved, m. */
+    /** t per constraint, xyz interleaved, m: where the target is in this substep. */
     double[] target;
+    /** Where the target was when the step began, and where it is asked to be when the step ends. */
+    private double[] start, goal;
 
     public AttachmentBlock(int capacity) {
         super(ConstraintFamily.ATTACHMENT, 1, capacity);
         target = new double[3 * lambda.length];
+        start = new double[3 * lambda.length];
+        goal = new double[3 * lambda.length];
     }
 
     /** Adds an attachment of particle i to (x, y, z); returns its index. */
@@ -30,16 +39,31 @@ public final class AttachmentBlock extends ConstraintBlock {
         int i = newSlot();
         particles[i] = particle;
         target[3 * i] = x; target[3 * i + 1] = y; target[3 * i + 2] = z;
+        System.arraycopy(target, 3 * i, start, 3 * i, 3);
+        System.arraycopy(target, 3 * i, goal, 3 * i, 3);
         return i;
     }
 
-    public double targetX(int i) { return target[3 * i]; }
-    public double targetY(int i) { return target[3 * i + 1]; }
-    public double targetZ(int i) { return target[3 * i + 2]; }
+    /** The target as last asked for (reached by the end of the next step). */
+    public double targetX(int i) { return goal[3 * i]; }
+    public double targetY(int i) { return goal[3 * i + 1]; }
+    public double targetZ(int i) { return goal[3 * i + 2]; }
 
     public void moveTarget(int i, double x, double y, double z) {
         EngineRange.vector("target", x, y, z, EngineRange.MAX_POSITION);
-        target[3 * i] = x; target[3 * i + 1] = y; target[3 * i + 2] = z;
+        goal[3 * i] = x; goal[3 * i + 1] = y; goal[3 * i + 2] = z;
+    }
+
+    /** Puts every target the given fraction (0, 1] of the way from where the step began to its goal. */
+    void glide(double fraction) {
+        for (int k = 0, n = 3 * count; k < n; k++)
+            target[k] = fraction >= 1 ? goal[k] : start[k] + fraction * (goal[k] - start[k]);
+    }
+
+    /** The step is over: every target is at its goal, where the next step begins. */
+    void arrive() {
+        System.arraycopy(goal, 0, target, 0, 3 * count);
+        System.arraycopy(goal, 0, start, 0, 3 * count);
     }
 
     @Override public double evaluate(int i, Particles p) {
@@ -80,16 +104,21 @@ public final class AttachmentBlock extends ConstraintBlock {
     @Override AttachmentBlock emptyLike(int capacity) { return new AttachmentBlock(capacity); }
 
     @Override void copyRest(int i, ConstraintBlock from, int j) {
-        System.arraycopy(((AttachmentBlock) from).target, 3 * j, target, 3 * i, 3);
+        AttachmentBlock a = (AttachmentBlock) from;
+        System.arraycopy(a.target, 3 * j, target, 3 * i, 3);
+        System.arraycopy(a.start, 3 * j, start, 3 * i, 3);
+        System.arraycopy(a.goal, 3 * j, goal, 3 * i, 3);
     }
 
     @Override void grow(int capacity) {
         super.grow(capacity);
         target = Arrays.copyOf(target, 3 * capacity);
+        start = Arrays.copyOf(start, 3 * capacity);
+        goal = Arrays.copyOf(goal, 3 * capacity);
     }
 
     @Override void remove(int i) {
-        System.arraycopy(target, 3 * (i + 1), target, 3 * i, 3 * (count - i - 1));
+        for (double[] a : new double[][] {target, start, goal}) System.arraycopy(a, 3 * (i + 1), a, 3 * i, 3 * (count - i - 1));
         super.remove(i);
     }
 }

@@ -12,7 +12,8 @@ import java.util.List;
  * {@link #run}:
  * <ol>
  *   <li><b>predict</b>: semi-implicit Euler, v += h·(g + w·f), x_prev = x, x += h·v (free particles);</li>
- *   <li><b>kinematics</b>: scripted pins and spheres move to their place at the substep's end;</li>
+ *   <li><b>kinematics</b>: scripted pins and spheres move to their place at the substep's end, and
+ *       attachment targets glide their share of the way to where they were last moved;</li>
  *   <li><b>collide</b>: this substep's contacts are found ({@link ContactSet});</li>
  *   <li><b>solve</b>: λ = 0 for every constraint (once per substep, never per sweep), then n sweeps or
  *       global iterations ({@link SolveStage}), each ending with the contacts;</li>
@@ -299,6 +300,7 @@ public final class Simulation {
             predict(h);
             observer.after(Stage.PREDICT);
             moveKinematics(t, h);
+            attachments.glide((s + 1) / (double) substeps);
             observer.after(Stage.KINEMATICS);
             contacts.collide(particles, spheres, planes, h);
             observer.after(Stage.COLLIDE);
@@ -313,6 +315,7 @@ public final class Simulation {
             observer.after(Stage.VELOCITY_PASS);
             time = t;
         }
+        attachments.arrive();
         java.util.Arrays.fill(particles.force, 0);
         stepCount++;
     }

@@ -1,0 +1,44 @@
+package xpbdcloth.engine;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+import org.junit.jupiter.api.Test;
+
+/**
+ * A grab is a hand that moves continuously: its target glides over a step's substeps, so a particle let
+ * go after a drag leaves with the hand's velocity (before, the target jumped at the step's start, the
+ * particle reached it in the first substep and stood still for the rest: it left at 0 m/s and a cloth
+ * could not be thrown).
+ */
+class AttachmentGlideTest {
+    static final double DT = 0.02, STEP_MOVE = 0.01; // the hand at 0.5 m/s
+
+    @Test
+    void aParticleLetGoLeavesWithTheHandsVelocity() {
+        Particles p = new Particles(1);
+        Simulation sim = new Simulation(p, new SolverSettings().gravity(0, 0, 0).timestep(DT).substeps(10).iterations(1));
+        AttachmentConstraint hand = sim.attach(0, 0, 0, 0);
+        for (int step = 1; step <= 5; step++) {
+            hand.moveTarget(step * STEP_MOVE, 0, 0);
+            sim.step();
+            assertEquals(step * STEP_MOVE, p.x(0), 1e-12, "at the hand at the end of each step");
+        }
+        double hand_v = STEP_MOVE / DT;
+        assertEquals(hand_v, p.vx(0), 1e-9, "moving with the hand when let go (m/s)");
+        assertEquals(STEP_MOVE, hand.targetX() - 4 * STEP_MOVE, 1e-15, "the target reads as asked");
+        sim.release(hand);
+        sim.step();
+        assertEquals(6 * STEP_MOVE, p.x(0), 1e-9, "thrown: it carries on at the hand's speed");
+    }
+
+    /** A target that is not moved stays put in every substep: attachments held still are as before. */
+    @Test
+    void aStillTargetHoldsItsParticleWhereItWas() {
+        Particles p = new Particles(1);
+        p.setPosition(0, 0.3, -0.2, 0.1);
+        Simulation sim = new Simulation(p, new SolverSettings().timestep(DT).substeps(4).iterations(2));
+        sim.attach(0, 0.3, -0.2, 0.1);
+        for (int step = 0; step < 50; step++) sim.step();
+        assertEquals(-0.2, p.y(0), 1e-12, "held against gravity by a hard attachment");
+    }
+}
