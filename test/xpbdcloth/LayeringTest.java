@@ -13,7 +13,7 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
 /**
- * The layering is one-way: tools → sketch → scene/experiments → engine → mesh. The engine (and its tests)
+ * The layering is one-way: tools, library → sketch → scene/experiments → engine → mesh. The engine (and its tests)
  * imports nothing of the layers above it nor of Processing; the scene package nothing of the sketch,
  * the tools or the experiments. Read from the source text, so a wrong import fails here by name.
  */
@@ -53,11 +53,18 @@ class LayeringTest {
         assertEquals(List.of(), violations(Path.of("src/xpbdcloth/scene"), above));
     }
 
+    /** The Processing library is a face on the sketch's parts: nothing below it knows it exists. */
+    @Test
+    void nothingImportsTheLibrary() throws IOException {
+        for (String below : new String[] {"sketch", "scene", "engine", "mesh", "experiments"})
+            assertEquals(List.of(), violations(Path.of("src/xpbdcloth/" + below), "xpbdcloth.library", "xpbdcloth.tools"));
+    }
+
     /** The repository cites papers and public sources, never a folder outside itself. */
     @Test
     void nothingPointsOutsideTheRepository() throws IOException {
         List<String> out = new ArrayList<>();
-        for (String root : new String[] {"README.md", "src", "test", "data", "build.gradle", "scripts", "xpbd_cloth"})
+        for (String root : new String[] {"README.md", "src", "test", "data", "build.gradle", "scripts", "xpbd_cloth", "processing-library"})
             try (Stream<Path> files = Files.walk(Path.of(root))) {
                 for (Path f : (Iterable<Path>) files.filter(Files::isRegularFile)::iterator)
                     if (!f.toString().endsWith("LayeringTest.java") && Files.readString(f, java.nio.charset.StandardCharsets.ISO_8859_1).contains("../" + "shared")) out.add(f.toString());

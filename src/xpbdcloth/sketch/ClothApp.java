@@ -33,12 +33,19 @@ public final class ClothApp {
         final int frames;
         /** Where to write the frames as one animated GIF too, or null. */
         final File gif;
+        /** Where to write the frames as an MP4 video too, or null; and its frames per second (30 or 60). */
+        final File mp4;
+        final int fps;
 
-        public Recording(File folder, int frames, File gif) {
+        public Recording(File folder, int frames, File gif) { this(folder, frames, gif, null, 60); }
+
+        public Recording(File folder, int frames, File gif, File mp4, int fps) {
             if (frames < 1) throw new IllegalArgumentException("frames must be >= 1, was " + frames);
             this.folder = folder;
             this.frames = frames;
             this.gif = gif;
+            this.mp4 = mp4;
+            this.fps = Mp4Video.checkedFps(fps);
         }
 
         /** Frame i (from 1) of the recording: frame-0001.png, … */
@@ -123,16 +130,6 @@ public final class ClothApp {
         camera.setStartView(0.5 * (m.min(0) + m.max(0)), cy, 0.5 * (m.min(2) + m.max(2)), distance, lying ? -0.55 : -0.15);
     }
 
-    /** World offset along x of running scene i: the pair stands side by side, PBD on the left. */
-    double offsetX(int i) {
-        if (!state.sideBySide()) return 0;
-        Preset.Cloth c = state.preset().cloth;
-        double width = c.isMesh() ? c.mesh.max(0) - c.mesh.min(0) : c.width;
-        double gap = Math.max(width, 0.6) * 0.65 + 0.15;
-        for (Preset.SphereSpec s : state.preset().spheres) gap = Math.max(gap, s.radius * 2.2);
-        return i == 0 ? -gap : gap;
-    }
-
     /**
      * Writes each running cloth's current shape as an OBJ beside the sketch (the sketch folder in the
      * Processing IDE, the working directory otherwise) and says where; a failure is a red notice.
@@ -204,7 +201,7 @@ public final class ClothApp {
             for (int i = 0; i < running.size(); i++) {
                 Scene sc = running.get(i);
                 g.pushMatrix();
-                g.translate((float) offsetX(i), 0, 0);
+                g.translate((float) state.offsetX(i), 0, 0);
                 GroundShadow.drawMesh(g, sc.cloth().particles().positions(), sc.cloth().triangles());
                 if (state.showSpheres) for (Sphere s : sc.simulation().spheres()) GroundShadow.drawSphere(g, s);
                 g.popMatrix();
@@ -222,23 +219,9 @@ public final class ClothApp {
         g.directionalLight(55, 58, 66, 0.4f, -0.3f, -0.8f);
         camera.eye(scratch);
         if (state.showGrid) renderer.drawGround(g, 0);
-        for (int i = 0; i < running.size(); i++) {
-            Scene sc = running.get(i);
-            double ox = offsetX(i);
-            g.pushMatrix();
-            g.translate((float) ox, 0, 0);
-            if (state.wireframe) renderer.drawWireframe(g, sc);
-            else if (sc.cloth().triangles().length == 0) renderer.drawRope(g, sc.cloth());
-            else {
-                long m0 = threadBean.getCurrentThreadAllocatedBytes();
-                renderer.drawMesh(g, sc.cloth(), scratch[0] - ox, scratch[1], scratch[2]);
-                meshAllocated = 0.9 * meshAllocated + 0.1 * (threadBean.getCurrentThreadAllocatedBytes() - m0);
-            }
-            renderer.drawParticles(g, sc.cloth().particles(), state.showParticles);
-            if (state.showSpheres) for (Sphere s : sc.simulation().spheres()) renderer.drawSphere(g, s);
-            if (state.showSpheres) for (xpbdcloth.engine.Plane pl : sc.simulation().planes()) renderer.drawPlane(g, pl, sc.cloth());
-            g.popMatrix();
-        }
+        long m0 = threadBean.getCurrentThreadAllocatedBytes();
+        renderer.drawScenes(g, state, scratch[0], scratch[1], scratch[2]);
+        meshAllocated = 0.9 * meshAllocated + 0.1 * (threadBean.getCurrentThreadAllocatedBytes() - m0);
         long h0 = threadBean.getCurrentThreadAllocatedBytes();
         OrbitCamera.beginHud(g);
         hud.draw(g, state, simMs, renderMs, allocatedPerFrame, app.frameRate, pacer.slowMotion(), recording != null);
@@ -250,9 +233,10 @@ public final class ClothApp {
         if (recording != null) {
             app.saveFrame(recording.frame(++recorded).getPath());
             if (recorded >= recording.frames) {
-                System.out.printf(java.util.Locale.ROOT, "recorded %d frames: sim %.2f ms/step, render %.2f ms/frame, %.0f bytes allocated/frame (smoothed), of which %.0f in the cloth mesh and %.0f in the HUD (text)%n",
+                System.out.printf(java.util.Locale.ROOT, "recorded %d frames: sim %.2f ms/step, render %.2f ms/frame, %.0f bytes allocated/frame (smoothed), of which %.0f in the scenes (cloth, particles, colliders) and %.0f in the HUD (text)%n",
                         recorded, simMs, renderMs, allocatedPerFrame, meshAllocated, hudAllocated);
                 if (recording.gif != null) writeGif();
+                if (recording.mp4 != null) writeMp4();
                 app.exit();
             }
         }
@@ -264,6 +248,15 @@ public final class ClothApp {
             System.out.printf("wrote %s (%d frames, %d bytes)%n", recording.gif, used, recording.gif.length());
         } catch (java.io.IOException e) {
             System.err.println("no GIF: " + e.getMessage() + " (the PNG frames are in " + recording.folder + ")");
+        }
+    }
+
+    private void writeMp4() {
+        try {
+            int used = Mp4Video.write(recording, recorded);
+            System.out.printf("wrote %s (%d frames at %d fps, %d bytes)%n", recording.mp4, used, recording.fps, recording.mp4.length());
+        } catch (java.io.IOException | RuntimeException e) {
+            System.err.println("no MP4: " + e.getMessage() + " (the PNG frames are in " + recording.folder + ")");
         }
     }
 
@@ -310,7 +303,7 @@ public final class ClothApp {
         int bestScene = 0;
         for (int s = 0; s < running.size(); s++) {
             Particles p = running.get(s).cloth().particles();
-            double ox = offsetX(s);
+            double ox = state.offsetX(s);
             for (int i = 0; i < p.count(); i++) {
                 camera.project(p.x(i) + ox, p.y(i), p.z(i), scratch);
                 if (scratch[2] <= 0) continue;
@@ -320,7 +313,7 @@ public final class ClothApp {
         }
         if (best < 0) return;
         Particles p = running.get(bestScene).cloth().particles();
-        grabPoint[0] = p.x(best) + offsetX(bestScene);
+        grabPoint[0] = p.x(best) + state.offsetX(bestScene);
         grabPoint[1] = p.y(best);
         grabPoint[2] = p.z(best);
         grabs = new AttachmentConstraint[running.size()];

@@ -17,7 +17,7 @@ import xpbdcloth.scene.Scene;
  * and a ground grid. Normals are recomputed each frame into arrays kept between frames, so drawing
  * allocates nothing per vertex.
  */
-final class ClothRenderer {
+public final class ClothRenderer {
     /** Front and back colours of the cloth (RGB). */
     static final int[] FRONT = {88, 148, 222}, BACK = {236, 172, 92};
     /** The colliders' colour (RGB): glazed ceramic, drawn with a specular highlight. */
@@ -26,6 +26,13 @@ final class ClothRenderer {
     static final double FULL_COLOUR_STRAIN = 0.05;
 
     private double[] normals = new double[0];
+    /**
+     * P3D multiplies stroke weights by the modelview's scale: a caller that draws the world scaled by s
+     * (the library, in pixels per metre) sets 1/s here so lines and points keep their widths in pixels.
+     */
+    private float strokeUnit = 1;
+
+    public void strokeUnit(float unit) { strokeUnit = unit; }
     private final FoldShading folds = new FoldShading();
 
     /** Area-weighted vertex normals, into an array kept between frames. */
@@ -36,8 +43,10 @@ final class ClothRenderer {
     }
 
     /**
-     * The mesh, lit on both sides: each triangle whose face turns away from the eye is drawn with its
-     * normals flipped and the back colour, so the lighting is right on the side the viewer sees.
+     * The mesh, lit on both sides: each triangle whose face turns away from the eye is drawn in the back
+     * colour. Its normals are not flipped: P3D lights both sides itself (its shaders light a face that
+     * OpenGL finds turned away with the negated normal), so a flip here would light the back side from
+     * the wrong side.
      */
     void drawMesh(PGraphics g, Cloth cloth, double eyeX, double eyeY, double eyeZ) {
         computeNormals(cloth);
@@ -55,15 +64,36 @@ final class ClothRenderer {
             double e2x = x[c] - x[a], e2y = x[c + 1] - x[a + 1], e2z = x[c + 2] - x[a + 2];
             double nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
             boolean front = nx * (eyeX - x[a]) + ny * (eyeY - x[a + 1]) + nz * (eyeZ - x[a + 2]) >= 0;
-            float sign = front ? 1 : -1;
             int[] col = front ? FRONT : BACK;
             float[] light = front ? folds.front : folds.back;
             float shade = dark[k / 3] ? CHECKER_SHADE : 1;
-            vertex(g, x, a, sign, shade * light[t[k]], col);
-            vertex(g, x, b, sign, shade * light[t[k + 1]], col);
-            vertex(g, x, c, sign, shade * light[t[k + 2]], col);
+            vertex(g, x, a, shade * light[t[k]], col);
+            vertex(g, x, b, shade * light[t[k + 1]], col);
+            vertex(g, x, c, shade * light[t[k + 2]], col);
         }
         g.endShape();
+    }
+
+    /**
+     * Every running scene of the state in world coordinates (the pair side by side): the cloth as the
+     * state's view asks (mesh, wireframe or rope), its particles and its colliders. The eye is the
+     * camera's position in the same coordinates, so each triangle is lit on the side the viewer sees.
+     */
+    public void drawScenes(PGraphics g, SketchState state, double eyeX, double eyeY, double eyeZ) {
+        java.util.List<Scene> running = state.running();
+        for (int i = 0; i < running.size(); i++) {
+            Scene sc = running.get(i);
+            double ox = state.offsetX(i);
+            g.pushMatrix();
+            g.translate((float) ox, 0, 0);
+            if (state.wireframe) drawWireframe(g, sc);
+            else if (sc.cloth().triangles().length == 0) drawRope(g, sc.cloth());
+            else drawMesh(g, sc.cloth(), eyeX - ox, eyeY, eyeZ);
+            drawParticles(g, sc.cloth().particles(), state.showParticles);
+            if (state.showSpheres) for (Sphere s : sc.simulation().spheres()) drawSphere(g, s);
+            if (state.showSpheres) for (Plane pl : sc.simulation().planes()) drawPlane(g, pl, sc.cloth());
+            g.popMatrix();
+        }
     }
 
     /** Squares across the cloth's longer side, and how much darker every second one is. */
@@ -112,16 +142,16 @@ final class ClothRenderer {
         double[] x = cloth.particles().positions();
         g.noFill();
         g.stroke(FRONT[0], FRONT[1], FRONT[2]);
-        g.strokeWeight(5);
+        g.strokeWeight(5 * strokeUnit);
         g.beginShape();
         for (int i = 0; i < cloth.particles().count(); i++) g.vertex((float) x[3 * i], (float) x[3 * i + 1], (float) x[3 * i + 2]);
         g.endShape();
     }
 
     /** Vertex k/3 with its normal (flipped for the back), in colour col darkened by shade. */
-    private void vertex(PGraphics g, double[] x, int k, float sign, float shade, int[] col) {
+    private void vertex(PGraphics g, double[] x, int k, float shade, int[] col) {
         g.fill(shade * col[0], shade * col[1], shade * col[2]);
-        g.normal(sign * (float) normals[k], sign * (float) normals[k + 1], sign * (float) normals[k + 2]);
+        g.normal((float) normals[k], (float) normals[k + 1], (float) normals[k + 2]);
         g.vertex((float) x[k], (float) x[k + 1], (float) x[k + 2]);
     }
 
@@ -138,7 +168,7 @@ final class ClothRenderer {
     void drawWireframe(PGraphics g, Scene scene) {
         Particles p = scene.cloth().particles();
         double[] x = p.positions();
-        g.strokeWeight(1.5f);
+        g.strokeWeight(1.5f * strokeUnit);
         g.beginShape(PConstants.LINES);
         for (ConstraintBlock block : scene.simulation().blocks()) {
             if (!(block instanceof DistanceBlock)) continue;
@@ -159,13 +189,13 @@ final class ClothRenderer {
         double[] x = p.positions();
         if (all) {
             g.stroke(240);
-            g.strokeWeight(3);
+            g.strokeWeight(3 * strokeUnit);
             g.beginShape(PConstants.POINTS);
             for (int i = 0; i < p.count(); i++) if (!p.isPinned(i)) g.vertex((float) x[3 * i], (float) x[3 * i + 1], (float) x[3 * i + 2]);
             g.endShape();
         }
         g.stroke(255, 150, 30);
-        g.strokeWeight(9);
+        g.strokeWeight(9 * strokeUnit);
         g.beginShape(PConstants.POINTS);
         for (int i = 0; i < p.count(); i++) if (p.isPinned(i)) g.vertex((float) x[3 * i], (float) x[3 * i + 1], (float) x[3 * i + 2]);
         g.endShape();
@@ -186,7 +216,7 @@ final class ClothRenderer {
         double wl = Math.sqrt(s.omegaX() * s.omegaX() + s.omegaY() * s.omegaY() + s.omegaZ() * s.omegaZ());
         if (wl > 0) g.rotate((float) s.spinAngle(), (float) (s.omegaX() / wl), (float) (s.omegaY() / wl), (float) (s.omegaZ() / wl));
         g.noFill();
-        g.strokeWeight(3);
+        g.strokeWeight(3 * strokeUnit);
         float r = (float) s.radius() * 1.004f;
         g.stroke(220, 60, 60);
         ring(g, r, 0);
@@ -236,7 +266,7 @@ final class ClothRenderer {
 
     /** A 4 m square grid on the ground, lines every 25 cm, drawn just above the floor and its shadows. */
     void drawGround(PGraphics g, double centreX) {
-        g.strokeWeight(1);
+        g.strokeWeight(1 * strokeUnit);
         g.stroke(78, 82, 92);
         g.beginShape(PConstants.LINES);
         float half = 2f, y = 2 * GroundShadow.LIFT;

@@ -7,7 +7,7 @@ package xpbdcloth.sketch;
  * global solvers do on the three-family scenes) it runs fewer steps and forgets the debt, so the scene
  * plays in slow motion instead of each frame trying to catch up and taking seconds.
  */
-final class FramePacer {
+public final class FramePacer {
     static final int MAX_STEPS_PER_FRAME = 8;
     /** Simulation time a frame may spend before the scene slows down (keeps the window at ≥ 20 fps). */
     static final double BUDGET_MS = 40;
@@ -19,7 +19,7 @@ final class FramePacer {
      * Steps for a frame that follows {@code frameSeconds} of wall time, for steps of {@code dt} s that
      * last cost {@code stepMs} ms each (0 if not known yet).
      */
-    int steps(double frameSeconds, double dt, double stepMs) {
+    public int steps(double frameSeconds, double dt, double stepMs) {
         accumulator += frameSeconds;
         int steps = (int) Math.floor(accumulator / dt);
         accumulator -= steps * dt;
@@ -31,8 +31,8 @@ final class FramePacer {
     }
 
     /** Whether the last frame ran fewer steps than the wall clock asked for. */
-    boolean slowMotion() { return slowMotion; }
+    public boolean slowMotion() { return slowMotion; }
 
     /** Forgets time owed (while paused). */
-    void reset() { accumulator = 0; }
+    public void reset() { accumulator = 0; }
 }

@@ -292,6 +292,14 @@ public final class SketchState {
 
     public void togglePause() { paused = !paused; }
 
+    public boolean paused() { return paused; }
+
+    /** Whether a single step was asked for while paused ('n'). */
+    public boolean stepRequested() { return pendingSteps > 0; }
+
+    /** Draw the cloth as a wireframe coloured by strain instead of shaded. */
+    public void wireframe(boolean on) { wireframe = on; }
+
     public void requestStep() { pendingSteps++; paused = true; }
 
     public void toggleWind() {
@@ -362,6 +370,16 @@ public final class SketchState {
     }
 
     /** Seconds of simulated time of the first running scene. */
+    /** World offset along x of running scene i: the pair stands side by side, PBD on the left. */
+    public double offsetX(int i) {
+        if (!sideBySide()) return 0;
+        Preset.Cloth c = preset().cloth;
+        double width = c.isMesh() ? c.mesh.max(0) - c.mesh.min(0) : c.width;
+        double gap = Math.max(width, 0.6) * 0.65 + 0.15;
+        for (Preset.SphereSpec s : preset().spheres) gap = Math.max(gap, s.radius * 2.2);
+        return i == 0 ? -gap : gap;
+    }
+
     public double time() { return running().get(0).simulation().time(); }
 
     public Simulation first() { return running().get(0).simulation(); }

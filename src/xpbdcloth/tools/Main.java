@@ -110,7 +110,7 @@ public final class Main implements Callable<Integer> {
     }
 
     @Command(name = "record", mixinStandardHelpOptions = true,
-            description = "Renders a scene through the real P3D sketch at a fixed timestep and writes PNG frames (and optionally a GIF).")
+            description = "Renders a scene through the real P3D sketch at a fixed timestep and writes PNG frames (and optionally a GIF and an MP4).")
     static final class Record implements Callable<Integer> {
         @CommandLine.Mixin
         SketchOptions sketch = new SketchOptions();
@@ -123,6 +123,12 @@ public final class Main implements Callable<Integer> {
 
         @Option(names = "--gif", description = "also write the frames as one looping GIF (every second frame, half size) to this file")
         File gif;
+
+        @Option(names = "--mp4", description = "also write the frames as an H.264 MP4 video at the window's size to this file")
+        File mp4;
+
+        @Option(names = "--fps", description = "frames per second of the MP4: 60 (every frame) or 30 (every second frame); both play in real time", defaultValue = "60")
+        int fps;
 
         @Option(names = "--obj", description = "instead of PNG frames, write the cloth as one OBJ per frame (frame-0001.obj, ...) into this folder; headless, no display needed")
         File obj;
@@ -137,14 +143,17 @@ public final class Main implements Callable<Integer> {
             // Absolute against where the user stands: Processing resolves a relative path against the sketch's folder.
             File folder = (out != null ? out : new File("build/frames/" + name + (sketch.sideBySide ? "-side-by-side" : ""))).getAbsoluteFile();
             if (gif != null) gif = gif.getAbsoluteFile();
+            if (mp4 != null) mp4 = mp4.getAbsoluteFile();
+            ClothApp.Recording recording = new ClothApp.Recording(folder, frames, gif, mp4, fps); // checks fps first
             System.out.println("recording " + frames + " frames of " + sketch.scene + " into " + folder);
-            sketch.open(new ClothApp.Recording(folder, frames, gif));
+            sketch.open(recording);
             return 0;
         }
 
         private int recordObj() throws java.io.IOException {
             if (sketch.sideBySide) throw new IllegalArgumentException("--obj records one cloth; drop --side-by-side (it shows two)");
             if (gif != null) throw new IllegalArgumentException("--obj writes meshes, not images; drop --gif");
+            if (mp4 != null) throw new IllegalArgumentException("--obj writes meshes, not images; drop --mp4");
             xpbdcloth.scene.Preset preset = PresetLoader.byNameOrPath(sketch.scene);
             long t0 = System.nanoTime();
             int n = xpbdcloth.scene.ObjExport.recordSequence(preset, frames, obj.toPath());

@@ -1,0 +1,277 @@
+package xpbdcloth.library;
+
+import java.io.File;
+import java.util.List;
+import processing.core.PApplet;
+import processing.core.PConstants;
+import processing.event.KeyEvent;
+import processing.event.MouseEvent;
+import processing.opengl.PGraphicsOpenGL;
+import xpbdcloth.engine.AttachmentConstraint;
+import xpbdcloth.engine.Cloth;
+import xpbdcloth.engine.Particles;
+import xpbdcloth.engine.Simulation;
+import xpbdcloth.scene.PresetLoader;
+import xpbdcloth.scene.Scene;
+import xpbdcloth.sketch.ClothRenderer;
+import xpbdcloth.sketch.FramePacer;
+import xpbdcloth.sketch.KeyBinding;
+import xpbdcloth.sketch.KeyBindings;
+import xpbdcloth.sketch.SketchState;
+
+/**
+ * A simulated cloth in your own Processing sketch. It registers itself with the sketch the way PeasyCam
+ * does ({@code pre} to step in real time, {@code keyEvent}, {@code mouseEvent}); you call {@link #draw()}
+ * where you want the cloth, under whatever camera and transforms your sketch sets:
+ *
+ * <pre>
+ * import xpbdcloth.library.*;
+ *
+ * ClothView cloth;
+ *
+ * void setup() {
+ *   size(800, 600, P3D);
+ *   cloth = new ClothView(this, "hanging");
+ * }
+ *
+ * void draw() {
+ *   background(30);
+ *   lights();
+ *   translate(width / 2, height * 0.85);  // the world's origin: the floor under the cloth
+ *   cloth.draw();
+ * }
+ * </pre>
+ *
+ * The cloth lives in metres with y up; {@link #draw()} scales it by {@link #pixelsPerMetre()} and turns
+ * it half a turn about x, so that up is up on screen and the scene's +z points away from Processing's
+ * default camera (add {@code rotateY(PI)} to see it from its +z side, as the xpbd-cloth sketch does). Drag the cloth with the left mouse button (it is thrown when released);
+ * the sketch's keys (m for PBD/XPBD, i/I iterations, b side by side, space pause, r reset, …) work as in
+ * the xpbd-cloth sketch unless {@link #keys(boolean)} turns them off. The engine is yours too:
+ * {@link #simulation()} and {@link #state()}.
+ */
+public final class ClothView {
+    /** Pixels per metre when the sketch does not choose: a 1 m cloth a little under half of an 800 px window. */
+    public static final float DEFAULT_PIXELS_PER_METRE = 300;
+    /** How near (px) the pointer must be to a particle to grab it. */
+    public static final double GRAB_PIXELS = 30;
+    /** Keys of the full sketch that need its window (file chooser, OBJ export, help, quit, floor): ignored here. */
+    static final String SKETCH_ONLY_KEYS = "lOhqg";
+
+    private final PApplet app;
+    private final SketchState state;
+    private final ClothRenderer renderer = new ClothRenderer();
+    private final FramePacer pacer = new FramePacer();
+    private final ScreenMapping screen = new ScreenMapping();
+    private float pixelsPerMetre = DEFAULT_PIXELS_PER_METRE;
+    private boolean autoStep = true, keys = true, mouse = true, grabNeedsControl;
+    private long lastNanos;
+    private double lastStepMs;
+
+    private AttachmentConstraint[] grabs;
+    private int grabbed = -1;
+    private double grabDepth;
+    private final double[][] grabStarts = new double[2][3];
+    private final double[] grabPoint = new double[3], scratch = new double[4];
+
+    /**
+     * A cloth from a built-in scene ("hanging", "corners", "flag", …) or a preset file; a relative path is
+     * looked up in the sketch's data folder, then in the sketch folder. The sketch must use P3D.
+     *
+     * @throws IllegalStateException if the sketch's renderer is not P3D
+     * @throws IllegalArgumentException if there is no such scene, or the preset is broken (the message
+     *         names the file, the field and the problem)
+     */
+    public ClothView(PApplet app, String sceneNameOrPath) {
+        if (!(app.g instanceof PGraphicsOpenGL) || !app.g.is3D())
+            throw new IllegalStateException("ClothView draws in 3D: call size(width, height, P3D) in settings() or setup()");
+        this.app = app;
+        state = new SketchState(PresetLoader.byNameOrPath(resolve(app, sceneNameOrPath)));
+        app.registerMethod("pre", this);
+        app.registerMethod("keyEvent", this);
+        app.registerMethod("mouseEvent", this);
+        lastNanos = System.nanoTime();
+    }
+
+    /** A built-in name as it is; a relative file name from the sketch's data folder, else its folder. */
+    private static String resolve(PApplet app, String nameOrPath) {
+        if (PresetLoader.BUILT_IN.contains(nameOrPath) || new File(nameOrPath).isAbsolute()) return nameOrPath;
+        for (String candidate : new String[] {app.dataPath(nameOrPath), app.sketchPath(nameOrPath)})
+            if (new File(candidate).isFile()) return candidate;
+        return nameOrPath;
+    }
+
+    // ---- Stepping -------------------------------------------------------------------------------------
+
+    /** Called by Processing before each frame's draw(): advances the simulation by the wall-clock time. */
+    public void pre() {
+        long now = System.nanoTime();
+        double frameSeconds = Math.min(0.25, (now - lastNanos) / 1e9);
+        lastNanos = now;
+        if (!autoStep) return;
+        if (state.paused()) {
+            pacer.reset();
+            if (state.stepRequested()) state.advance();
+            return;
+        }
+        int steps = pacer.steps(frameSeconds, state.dt(), lastStepMs);
+        long t0 = System.nanoTime();
+        int done = 0;
+        while (done < steps && state.advance()) done++;
+        if (done > 0) lastStepMs = (System.nanoTime() - t0) / 1e6 / done;
+    }
+
+    /** Advances every running cloth by one step of dt (for sketches that step themselves: see {@link #autoStep}). */
+    public void step() { state.advance(); }
+
+    /** Whether {@code pre()} steps in real time (default) or only {@link #step()} does. */
+    public ClothView autoStep(boolean on) { autoStep = on; return this; }
+
+    // ---- Drawing --------------------------------------------------------------------------------------
+
+    /**
+     * Draws the cloth (and its colliders) at the current origin, in metres × {@link #pixelsPerMetre()},
+     * y up, +z away from the default camera. Uses the sketch's lights: call {@code lights()} first.
+     */
+    public void draw() {
+        PGraphicsOpenGL g = (PGraphicsOpenGL) app.g;
+        g.pushMatrix();
+        // Half a turn about x: y up on screen. A rotation, not a mirror (scaling y alone would be one, and
+        // OpenGL would then take the faces towards the viewer for back faces and light them from behind).
+        g.scale(pixelsPerMetre, -pixelsPerMetre, -pixelsPerMetre);
+        screen.capture(g);
+        ScreenMapping.eye(g, scratch);
+        renderer.strokeUnit(1 / pixelsPerMetre);
+        renderer.drawScenes(g, state, scratch[0], scratch[1], scratch[2]);
+        g.popMatrix();
+    }
+
+    public float pixelsPerMetre() { return pixelsPerMetre; }
+
+    /** How big the cloth draws: pixels per metre of the simulation (finite, > 0). */
+    public ClothView pixelsPerMetre(float pixels) {
+        pixelsPerMetre = checkedScale(pixels);
+        return this;
+    }
+
+    static float checkedScale(float pixels) {
+        if (!(pixels > 0) || Float.isInfinite(pixels))
+            throw new IllegalArgumentException("pixelsPerMetre must be finite and > 0, was " + pixels);
+        return pixels;
+    }
+
+    /** Draw the cloth as a wireframe coloured by strain (red stretched, blue compressed) instead of shaded. */
+    public ClothView wireframe(boolean on) { state.wireframe(on); return this; }
+
+    // ---- Input ----------------------------------------------------------------------------------------
+
+    /** Whether the sketch's keys act on this cloth (default on). */
+    public ClothView keys(boolean on) { keys = on; return this; }
+
+    /** Whether the mouse grabs the cloth (default on). */
+    public ClothView mouse(boolean on) { mouse = on; return this; }
+
+    /**
+     * Grab only with Ctrl held, leaving plain drags to a camera library such as PeasyCam, whose
+     * rotation is on the left button too.
+     */
+    public ClothView grabWithControl(boolean on) { grabNeedsControl = on; return this; }
+
+    /** Called by Processing for each key. */
+    public void keyEvent(KeyEvent e) {
+        if (!keys || e.getAction() != KeyEvent.PRESS || e.getKey() == PConstants.CODED) return;
+        if (SKETCH_ONLY_KEYS.indexOf(e.getKey()) >= 0) return;
+        KeyBinding b = KeyBindings.forKey(e.getKey());
+        if (b != null) b.press(state);
+    }
+
+    /** Called by Processing for each mouse event. */
+    public void mouseEvent(MouseEvent e) {
+        if (!mouse) return;
+        int action = e.getAction();
+        if (action == MouseEvent.PRESS && e.getButton() == PConstants.LEFT && (e.isControlDown() || !grabNeedsControl))
+            grab(e.getX(), e.getY());
+        else if (action == MouseEvent.DRAG) dragTo(e.getX(), e.getY());
+        else if (action == MouseEvent.RELEASE) release();
+    }
+
+    /**
+     * Holds the particle drawn nearest to screen point (x, y), within {@link #GRAB_PIXELS}, as the cloth was
+     * last drawn; every running cloth holds the same particle. Returns whether one was grabbed.
+     */
+    public boolean grab(double x, double y) {
+        release();
+        grabbed = -1;
+        if (!screen.ready()) return false;
+        List<Scene> running = state.running();
+        double bestD2 = GRAB_PIXELS * GRAB_PIXELS;
+        int bestScene = -1;
+        for (int s = 0; s < running.size(); s++) {
+            Particles p = running.get(s).cloth().particles();
+            double ox = state.offsetX(s);
+            for (int i = 0; i < p.count(); i++) {
+                screen.toScreen(p.x(i) + ox, p.y(i), p.z(i), scratch);
+                if (scratch[3] <= 0) continue;
+                double d2 = (scratch[0] - x) * (scratch[0] - x) + (scratch[1] - y) * (scratch[1] - y);
+                if (d2 < bestD2) { bestD2 = d2; grabbed = i; bestScene = s; grabDepth = scratch[2]; }
+            }
+        }
+        if (bestScene < 0) return false;
+        Particles p = running.get(bestScene).cloth().particles();
+        grabPoint[0] = p.x(grabbed) + state.offsetX(bestScene);
+        grabPoint[1] = p.y(grabbed);
+        grabPoint[2] = p.z(grabbed);
+        grabs = new AttachmentConstraint[running.size()];
+        for (int s = 0; s < running.size(); s++) {
+            Particles q = running.get(s).cloth().particles();
+            grabStarts[s][0] = q.x(grabbed);
+            grabStarts[s][1] = q.y(grabbed);
+            grabStarts[s][2] = q.z(grabbed);
+            grabs[s] = running.get(s).simulation().attach(grabbed, q.x(grabbed), q.y(grabbed), q.z(grabbed));
+        }
+        return true;
+    }
+
+    /** Moves the held particle under screen point (x, y), at the depth where it was grabbed. */
+    public void dragTo(double x, double y) {
+        if (grabs == null) return;
+        screen.toWorld(x, y, grabDepth, scratch);
+        double dx = scratch[0] - grabPoint[0], dy = scratch[1] - grabPoint[1], dz = scratch[2] - grabPoint[2];
+        for (int s = 0; s < grabs.length; s++)
+            grabs[s].moveTarget(grabStarts[s][0] + dx, grabStarts[s][1] + dy, grabStarts[s][2] + dz);
+    }
+
+    /** Lets go: the particle keeps the velocity the drag gave it, so a quick drag throws the cloth. */
+    public void release() {
+        if (grabs == null) return;
+        List<Scene> running = state.running();
+        for (int s = 0; s < grabs.length && s < running.size(); s++) running.get(s).simulation().release(grabs[s]);
+        grabs = null;
+        grabbed = -1;
+    }
+
+    /** The particle held by the mouse, or -1. */
+    public int grabbed() { return grabbed; }
+
+    // ---- The engine -----------------------------------------------------------------------------------
+
+    /** The (first) running simulation: add forces, colliders, read positions. */
+    public Simulation simulation() { return state.first(); }
+
+    /** The (first) running cloth. */
+    public Cloth cloth() { return state.running().get(0).cloth(); }
+
+    /** Every control of the full sketch: mode, iterations, substeps, dt, materials, wind, scenes, side by side. */
+    public SketchState state() { return state; }
+
+    /** PBD on the left and XPBD on the right, the same cloth otherwise. */
+    public ClothView sideBySide(boolean on) {
+        if (state.sideBySide() != on) {
+            release();
+            state.toggleSideBySide();
+        }
+        return this;
+    }
+
+    /** The last notice (a refused key, a paused divergence), or "". */
+    public String message() { return state.message(); }
+}
