@@ -1,17 +1,35 @@
 package xpbdcloth.engine;
 
 /**
- * A solid the cloth cannot enter (a sphere, a plane): in the collide stage it lists the particles it may
- * touch this substep, and in the solve it projects the contact with one of them. Kinematic: the cloth
- * never pushes it. Each kind's contact maths lives in its own class ({@link SphereCollisionConstraint},
- * {@link PlaneCollisionConstraint}); this is only how {@link ContactSet} reaches it.
+ * A solid the cloth cannot enter (a sphere, a plane, a box, a capsule): in the collide stage it lists the
+ * particles it may touch this substep, and in the solve it projects the contact with one of them.
+ * Kinematic: the cloth never pushes it. Each kind's contact maths lives in its own class
+ * ({@link SphereCollisionConstraint}, {@link PlaneCollisionConstraint}, {@link ShapeCollisionConstraint});
+ * this is only how {@link ContactSet} reaches it, with what every contact shares: the cloth's half
+ * thickness kept from the surface, and Coulomb's two coefficients.
  */
 public abstract class Collider {
-    Collider() {}
+    /** Half the cloth's thickness, kept between particle centres and the surface, m. */
+    final double margin;
+    /** Coulomb's μₛ and μₖ between the cloth and this surface. */
+    final double staticFriction, kineticFriction;
+
+    Collider(double margin, double staticFriction, double kineticFriction) {
+        this.margin = Check.inRange("margin", margin, 0, EngineRange.MAX_RADIUS);
+        this.staticFriction = Check.nonNegative("staticFriction", staticFriction);
+        this.kineticFriction = Check.nonNegative("kineticFriction", kineticFriction);
+    }
+
+    public final double margin() { return margin; }
+    public final double staticFriction() { return staticFriction; }
+    public final double kineticFriction() { return kineticFriction; }
 
     /** The collide stage: adds to {@code contacts} every free particle this collider may touch this substep. */
     abstract void findContacts(Particles p, double h, ContactSet contacts);
 
     /** One projection of the contact with particle i (nothing while it is outside). */
     abstract void project(Particles p, int i, double h);
+
+    /** C(x) of the contact with particle i: its distance outside the surface plus margin, m (negative inside). */
+    abstract double clearance(Particles p, int i);
 }

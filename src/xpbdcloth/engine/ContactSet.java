@@ -15,7 +15,8 @@ import java.util.List;
  * particle moving farther than that in one substep's sweeps would escape (it is then caught in the next
  * substep). Order: sphere by sphere, particles ascending, the order the permanent contacts had, so
  * trajectories are unchanged bit for bit; then plane by plane, for particles within {@link #PLANE_SLACK}
- * of the surface (plus margin and their own motion).
+ * of the surface (plus margin and their own motion); then box and capsule, for particles within reach of
+ * the ball that holds the solid along its path over the substep.
  */
 final class ContactSet {
     /** Candidate distance beyond the surface, as a fraction of the sphere's radius. */
@@ -37,10 +38,11 @@ final class ContactSet {
     }
 
     /** The collide stage: this substep's candidates (the spheres' first), from the predicted positions and placed colliders. */
-    void collide(Particles p, List<Sphere> spheres, List<Plane> planes, double h) {
+    void collide(Particles p, List<Sphere> spheres, List<Plane> planes, List<RigidCollider> solids, double h) {
         count = 0;
         for (int s = 0, ns = spheres.size(); s < ns; s++) spheres.get(s).findContacts(p, h, this);
         for (int s = 0, ns = planes.size(); s < ns; s++) planes.get(s).findContacts(p, h, this);
+        for (int s = 0, ns = solids.size(); s < ns; s++) solids.get(s).findContacts(p, h, this);
     }
 
     /** A candidate: particle i against collider c. */
@@ -49,6 +51,16 @@ final class ContactSet {
         with[count] = c;
         count++;
     }
+
+    /** Candidates touching their collider now (within 1 µm of the surface plus margin, or inside). */
+    int touching(Particles p) {
+        int n = 0;
+        for (int k = 0; k < count; k++) if (with[k].clearance(p, particle[k]) < TOUCHING) n++;
+        return n;
+    }
+
+    /** How near (m) a particle may be to its collider's surface plus margin and count as touching it. */
+    static final double TOUCHING = 1e-6;
 
     /** One Gauss–Seidel pass over the contacts. */
     void project(Particles p, SolverContext ctx) {

@@ -7,7 +7,6 @@ package xpbdcloth.engine;
  */
 public final class Plane extends Collider {
     final double nx, ny, nz, offset;
-    final double margin, staticFriction, kineticFriction;
 
     /**
      * @param point           a point of the surface, m
@@ -17,6 +16,7 @@ public final class Plane extends Collider {
      * @param kineticFriction μₖ ≥ 0
      */
     public Plane(double[] point, double[] normal, double margin, double staticFriction, double kineticFriction) {
+        super(margin, staticFriction, kineticFriction);
         if (point == null || point.length != 3) throw new IllegalArgumentException("point must have 3 components, was " + (point == null ? "null" : point.length));
         if (normal == null || normal.length != 3) throw new IllegalArgumentException("normal must have 3 components, was " + (normal == null ? "null" : normal.length));
         EngineRange.vector("point", point[0], point[1], point[2], EngineRange.MAX_POSITION);
@@ -24,9 +24,6 @@ public final class Plane extends Collider {
         double len = Math.sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
         if (!(len > 1e-9 && len < 1e9))
             throw new IllegalArgumentException("normal must have a length in (1e-9, 1e9), was " + len);
-        this.margin = Check.inRange("margin", margin, 0, EngineRange.MAX_RADIUS);
-        this.staticFriction = Check.nonNegative("staticFriction", staticFriction);
-        this.kineticFriction = Check.nonNegative("kineticFriction", kineticFriction);
         nx = normal[0] / len; ny = normal[1] / len; nz = normal[2] / len;
         offset = nx * point[0] + ny * point[1] + nz * point[2];
     }
@@ -53,10 +50,9 @@ public final class Plane extends Collider {
 
     @Override void project(Particles p, int i, double h) { PlaneCollisionConstraint.project(p, i, this, h); }
 
+    @Override double clearance(Particles p, int i) { return distance(p.x[3 * i], p.x[3 * i + 1], p.x[3 * i + 2]) - margin; }
+
     public double normalX() { return nx; }
     public double normalY() { return ny; }
     public double normalZ() { return nz; }
-    public double margin() { return margin; }
-    public double staticFriction() { return staticFriction; }
-    public double kineticFriction() { return kineticFriction; }
 }

@@ -12,7 +12,7 @@ import java.util.List;
  * {@link #run}:
  * <ol>
  *   <li><b>predict</b>: semi-implicit Euler, v += h·(g + w·f), x_prev = x, x += h·v (free particles);</li>
- *   <li><b>kinematics</b>: scripted pins and spheres move to their place at the substep's end, and
+ *   <li><b>kinematics</b>: scripted pins, spheres, boxes and capsules move to their place at the substep's end, and
  *       attachment targets glide their share of the way to where they were last moved;</li>
  *   <li><b>collide</b>: this substep's contacts are found ({@link ContactSet});</li>
  *   <li><b>solve</b>: λ = 0 for every constraint (once per substep, never per sweep), then n sweeps or
@@ -38,6 +38,7 @@ public final class Simulation {
     /** The views handed out by {@link #attach}, re-indexed when one is released. */
     private final List<AttachmentConstraint> grabs = new ArrayList<>();
     private final List<Sphere> spheres = new ArrayList<>();
+    private final List<RigidCollider> solids = new ArrayList<>();
     private final List<Plane> planes = new ArrayList<>();
     private final ContactSet contacts = new ContactSet();
     private final List<Kinematics> kinematics = new ArrayList<>();
@@ -77,6 +78,11 @@ public final class Simulation {
     public long stepCount() { return stepCount; }
     public List<Sphere> spheres() { return java.util.Collections.unmodifiableList(spheres); }
     public List<Plane> planes() { return java.util.Collections.unmodifiableList(planes); }
+    /** The boxes and capsules. */
+    public List<RigidCollider> solids() { return java.util.Collections.unmodifiableList(solids); }
+
+    /** Spheres, planes, boxes and capsules together. */
+    public int colliderCount() { return spheres.size() + planes.size() + solids.size(); }
     public List<ExternalForce> forces() { return java.util.Collections.unmodifiableList(forces); }
 
     /**
@@ -174,7 +180,7 @@ public final class Simulation {
     public Simulation add(Sphere s) {
         if (s == null) throw new IllegalArgumentException("sphere must not be null, was null");
         spheres.add(s);
-        contacts.reserve(particles.count(), spheres.size() + planes.size());
+        contacts.reserve(particles.count(), colliderCount());
         return this;
     }
 
@@ -182,7 +188,15 @@ public final class Simulation {
     public Simulation add(Plane plane) {
         if (plane == null) throw new IllegalArgumentException("plane must not be null, was null");
         planes.add(plane);
-        contacts.reserve(particles.count(), spheres.size() + planes.size());
+        contacts.reserve(particles.count(), colliderCount());
+        return this;
+    }
+
+    /** Adds a box or a capsule; its contacts are found each substep like the spheres', continuous when fast. */
+    public Simulation add(RigidCollider solid) {
+        if (solid == null) throw new IllegalArgumentException("collider must not be null, was null");
+        solids.add(solid);
+        contacts.reserve(particles.count(), colliderCount());
         return this;
     }
 
@@ -294,6 +308,7 @@ public final class Simulation {
         final double h = dt / substeps;
         for (int f = 0, nf = forces.size(); f < nf; f++) forces.get(f).apply(particles, time, dt);
         observer.after(Stage.FORCES);
+        collideNanos = 0;
         ctx.load(settings, h);
         for (int s = 0; s < substeps; s++) {
             final double t = time + h;
@@ -302,7 +317,9 @@ public final class Simulation {
             moveKinematics(t, h);
             attachments.glide((s + 1) / (double) substeps);
             observer.after(Stage.KINEMATICS);
-            contacts.collide(particles, spheres, planes, h);
+            long c0 = System.nanoTime();
+            contacts.collide(particles, spheres, planes, solids, h);
+            collideNanos += System.nanoTime() - c0;
             observer.after(Stage.COLLIDE);
             for (int b = 0, nb = body.size(); b < nb; b++) body.get(b).beginSubstep(ctx);
             attachments.beginSubstep(ctx);
@@ -323,6 +340,7 @@ public final class Simulation {
     private void moveKinematics(double t, double h) {
         for (int k = 0, nk = kinematics.size(); k < nk; k++) kinematics.get(k).apply(particles, t);
         for (int k = 0, nk = spheres.size(); k < nk; k++) spheres.get(k).advance(t, h);
+        for (int k = 0, nk = solids.size(); k < nk; k++) solids.get(k).advance(t, h);
     }
 
     /**
@@ -386,6 +404,7 @@ public final class Simulation {
         snapshot.restore(particles, spheres);
         time = snapshot.time;
         stepCount = snapshot.stepCount;
+        for (RigidCollider s : solids) s.moveTo(time); // a pose is a function of time
     }
 
     private GlobalSolver globalSolver() {
@@ -469,6 +488,14 @@ public final class Simulation {
     /** Contacts found in the last substep (candidates within reach of a sphere, touching or not). */
     public int contactCount() { return contacts.count(); }
 
+    /** Of those, the ones touching their collider now. */
+    public int touchingContacts() { return contacts.touching(particles); }
+
+    /** Wall time of the last step's collide stages (finding the contacts, all substeps), ms. */
+    public double collideMs() { return collideNanos / 1e6; }
+
+    private long collideNanos;
+
     /** The substep h of the step in progress (or of the last step), seconds. */
     public double substep() { return ctx.h; }
 
@@ -492,10 +519,11 @@ public final class Simulation {
         return Math.sqrt(sum);
     }
 
-    /** Places every sphere at its path's start and sets the clock to 0 (scene reset). */
+    /** Places every sphere, box and capsule at its path's start and sets the clock to 0 (scene reset). */
     public void resetClock() {
         time = 0;
         stepCount = 0;
         for (Sphere s : spheres) s.moveTo(0);
+        for (RigidCollider s : solids) s.moveTo(0);
     }
 }

@@ -7,9 +7,6 @@ package xpbdcloth.engine;
 public final class Sphere extends Collider {
     private final SpherePath path;
     final double radius;
-    /** Cloth thickness kept between particle centres and the surface, m. */
-    final double margin;
-    final double staticFriction, kineticFriction;
     /** Angular velocity ω, rad/s. */
     double omegaX, omegaY, omegaZ;
     /** Centre now, and its velocity over the last substep (m/s). */
@@ -25,12 +22,10 @@ public final class Sphere extends Collider {
      * @param kineticFriction μₖ ≥ 0
      */
     public Sphere(SpherePath path, double radius, double margin, double staticFriction, double kineticFriction) {
+        super(margin, staticFriction, kineticFriction);
         if (path == null) throw new IllegalArgumentException("path must not be null, was null");
         this.path = path;
         this.radius = Check.inRange("radius", radius, Double.MIN_NORMAL, EngineRange.MAX_RADIUS);
-        this.margin = Check.inRange("margin", margin, 0, EngineRange.MAX_RADIUS);
-        this.staticFriction = Check.nonNegative("staticFriction", staticFriction);
-        this.kineticFriction = Check.nonNegative("kineticFriction", kineticFriction);
         moveTo(0);
     }
 
@@ -87,10 +82,12 @@ public final class Sphere extends Collider {
 
     @Override void project(Particles p, int i, double h) { SphereCollisionConstraint.project(p, i, this, h); }
 
+    @Override double clearance(Particles p, int i) {
+        double dx = p.x[3 * i] - cx, dy = p.x[3 * i + 1] - cy, dz = p.x[3 * i + 2] - cz;
+        return Math.sqrt(dx * dx + dy * dy + dz * dz) - (radius + margin);
+    }
+
     public double radius() { return radius; }
-    public double margin() { return margin; }
-    public double staticFriction() { return staticFriction; }
-    public double kineticFriction() { return kineticFriction; }
     public double centreX() { return cx; }
     public double centreY() { return cy; }
     public double centreZ() { return cz; }

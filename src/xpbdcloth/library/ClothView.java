@@ -1,20 +1,17 @@
 package xpbdcloth.library;
 
 import java.io.File;
-import java.util.List;
 import processing.core.PApplet;
 import processing.core.PConstants;
 import processing.event.KeyEvent;
 import processing.event.MouseEvent;
 import processing.opengl.PGraphicsOpenGL;
-import xpbdcloth.engine.AttachmentConstraint;
 import xpbdcloth.engine.Cloth;
-import xpbdcloth.engine.Particles;
 import xpbdcloth.engine.Simulation;
 import xpbdcloth.scene.PresetLoader;
-import xpbdcloth.scene.Scene;
 import xpbdcloth.sketch.ClothRenderer;
 import xpbdcloth.sketch.FramePacer;
+import xpbdcloth.sketch.Grab;
 import xpbdcloth.sketch.KeyBinding;
 import xpbdcloth.sketch.KeyBindings;
 import xpbdcloth.sketch.SketchState;
@@ -67,11 +64,9 @@ public final class ClothView {
     private long lastNanos;
     private double lastStepMs;
 
-    private AttachmentConstraint[] grabs;
-    private int grabbed = -1;
-    private double grabDepth;
-    private final double[][] grabStarts = new double[2][3];
-    private final double[] grabPoint = new double[3], scratch = new double[4];
+    /** The particle the mouse holds, or null. */
+    private Grab grab;
+    private final double[] scratch = new double[4];
 
     /**
      * A cloth from a built-in scene ("hanging", "corners", "flag", …) or a preset file; a relative path is
@@ -200,57 +195,27 @@ public final class ClothView {
      */
     public boolean grab(double x, double y) {
         release();
-        grabbed = -1;
         if (!screen.ready()) return false;
-        List<Scene> running = state.running();
-        double bestD2 = GRAB_PIXELS * GRAB_PIXELS;
-        int bestScene = -1;
-        for (int s = 0; s < running.size(); s++) {
-            Particles p = running.get(s).cloth().particles();
-            double ox = state.offsetX(s);
-            for (int i = 0; i < p.count(); i++) {
-                screen.toScreen(p.x(i) + ox, p.y(i), p.z(i), scratch);
-                if (scratch[3] <= 0) continue;
-                double d2 = (scratch[0] - x) * (scratch[0] - x) + (scratch[1] - y) * (scratch[1] - y);
-                if (d2 < bestD2) { bestD2 = d2; grabbed = i; bestScene = s; grabDepth = scratch[2]; }
-            }
-        }
-        if (bestScene < 0) return false;
-        Particles p = running.get(bestScene).cloth().particles();
-        grabPoint[0] = p.x(grabbed) + state.offsetX(bestScene);
-        grabPoint[1] = p.y(grabbed);
-        grabPoint[2] = p.z(grabbed);
-        grabs = new AttachmentConstraint[running.size()];
-        for (int s = 0; s < running.size(); s++) {
-            Particles q = running.get(s).cloth().particles();
-            grabStarts[s][0] = q.x(grabbed);
-            grabStarts[s][1] = q.y(grabbed);
-            grabStarts[s][2] = q.z(grabbed);
-            grabs[s] = running.get(s).simulation().attach(grabbed, q.x(grabbed), q.y(grabbed), q.z(grabbed));
-        }
-        return true;
+        grab = Grab.pick(state, screen::toScreen, x, y, GRAB_PIXELS);
+        return grab != null;
     }
 
     /** Moves the held particle under screen point (x, y), at the depth where it was grabbed. */
     public void dragTo(double x, double y) {
-        if (grabs == null) return;
-        screen.toWorld(x, y, grabDepth, scratch);
-        double dx = scratch[0] - grabPoint[0], dy = scratch[1] - grabPoint[1], dz = scratch[2] - grabPoint[2];
-        for (int s = 0; s < grabs.length; s++)
-            grabs[s].moveTarget(grabStarts[s][0] + dx, grabStarts[s][1] + dy, grabStarts[s][2] + dz);
+        if (grab == null) return;
+        screen.toWorld(x, y, grab.depth, scratch);
+        grab.moveTo(scratch[0], scratch[1], scratch[2]);
     }
 
     /** Lets go: the particle keeps the velocity the drag gave it, so a quick drag throws the cloth. */
     public void release() {
-        if (grabs == null) return;
-        List<Scene> running = state.running();
-        for (int s = 0; s < grabs.length && s < running.size(); s++) running.get(s).simulation().release(grabs[s]);
-        grabs = null;
-        grabbed = -1;
+        if (grab == null) return;
+        grab.release();
+        grab = null;
     }
 
     /** The particle held by the mouse, or -1. */
-    public int grabbed() { return grabbed; }
+    public int grabbed() { return grab == null ? -1 : grab.particle; }
 
     // ---- The engine -----------------------------------------------------------------------------------
 

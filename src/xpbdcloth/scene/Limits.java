@@ -82,7 +82,7 @@ public final class Limits {
     public static final int MAX_PIN_MOTIONS = 256;
     /**
      * The work a step may ask of Gauss–Seidel, in particle visits: particles × substeps × (iterations +
-     * spheres). 2²⁵ is, for example, 512² particles at 128 sweeps a step, or 128² at 2048: about 4 s per
+     * colliders). 2²⁵ is, for example, 512² particles at 128 sweeps a step, or 128² at 2048: about 4 s per
      * step on a 2-core laptop (about 5 constraints per particle at 50 M projections/s). Each field can be
      * at its maximum; all of them at once would be hours per step.
      */
@@ -95,15 +95,15 @@ public final class Limits {
     public static final long MAX_GLOBAL_WORK = 64 * 64 * 20;
 
     /** The problem with a step this large, in words, or null if it is within {@link #MAX_WORK} (or {@link #MAX_GLOBAL_WORK}). */
-    public static String workProblem(long particles, int iterations, int substeps, int spheres, boolean global) {
-        long work = global ? particles * substeps * (long) iterations : particles * substeps * (long) (iterations + spheres);
+    public static String workProblem(long particles, int iterations, int substeps, int colliders, boolean global) {
+        long work = global ? particles * substeps * (long) iterations : particles * substeps * (long) (iterations + colliders);
         long max = global ? MAX_GLOBAL_WORK : MAX_WORK;
         if (work <= max) return null;
         return global
                 ? "particles × substeps × iterations must be at most " + max + " with a global solver (64² at 2 × 10 takes 1.7 s a step), was "
                         + particles + " × " + substeps + " × " + iterations + " = " + work + "; use gauss-seidel, or fewer particles, substeps or iterations"
-                : "particles × substeps × (iterations + spheres) must be at most " + max + " (about 4 s a step), was "
-                        + particles + " × " + substeps + " × (" + iterations + " + " + spheres + ") = " + work + "; use fewer particles, substeps or iterations";
+                : "particles × substeps × (iterations + colliders) must be at most " + max + " (about 4 s a step), was "
+                        + particles + " × " + substeps + " × (" + iterations + " + " + colliders + ") = " + work + "; use fewer particles, substeps or iterations";
     }
 
     /** Vertices of a mesh cloth after welding: as many as the largest grid. */

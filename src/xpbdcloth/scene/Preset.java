@@ -24,14 +24,16 @@ public final class Preset {
     public final Map<ConstraintFamily, Material> families;
     public final Solver solver;
     public final List<SphereSpec> spheres;
-    /** The other colliders (so far planes: floors, walls, slopes). */
+    /** Fixed planes: floors, walls, slopes. */
     public final List<PlaneSpec> planes;
+    /** Boxes and capsules. */
+    public final List<SolidSpec> solids;
     public final List<PinMotion> pinMotions;
     /** Null when the preset has no wind. */
     public final WindSpec wind;
 
     Preset(String source, String name, String description, Cloth cloth, Map<ConstraintFamily, Material> families, Solver solver,
-           List<SphereSpec> spheres, List<PlaneSpec> planes, List<PinMotion> pinMotions, WindSpec wind) {
+           List<SphereSpec> spheres, List<PlaneSpec> planes, List<SolidSpec> solids, List<PinMotion> pinMotions, WindSpec wind) {
         this.source = source;
         this.name = name;
         this.description = description;
@@ -40,6 +42,7 @@ public final class Preset {
         this.solver = solver;
         this.spheres = Collections.unmodifiableList(spheres);
         this.planes = Collections.unmodifiableList(planes);
+        this.solids = Collections.unmodifiableList(solids);
         this.pinMotions = Collections.unmodifiableList(pinMotions);
         this.wind = wind;
     }
@@ -84,6 +87,22 @@ public final class Preset {
 
         public boolean isMesh() { return mesh != null; }
 
+        /** The shortest edge between particles at rest, m: a grid's spacing, or a mesh's shortest triangle side. */
+        public double shortestEdge() {
+            if (!isMesh()) {
+                double dx = columns > 1 ? width / (columns - 1) : Double.POSITIVE_INFINITY, dy = rows > 1 ? height / (rows - 1) : Double.POSITIVE_INFINITY;
+                return Math.min(dx, dy);
+            }
+            double[] x = mesh.positions();
+            int[] t = mesh.triangles();
+            double shortest = Double.POSITIVE_INFINITY;
+            for (int k = 0; k < t.length; k++) {
+                int a = 3 * t[k], b = 3 * t[k % 3 == 2 ? k - 2 : k + 1];
+                shortest = Math.min(shortest, Math.sqrt((x[a] - x[b]) * (x[a] - x[b]) + (x[a + 1] - x[b + 1]) * (x[a + 1] - x[b + 1]) + (x[a + 2] - x[b + 2]) * (x[a + 2] - x[b + 2])));
+            }
+            return shortest;
+        }
+
         /** The particle a pin motion names: (row, col) on a grid. */
         int vertex(int row, int col) { return row * columns + col; }
     }
@@ -123,6 +142,54 @@ public final class Preset {
         PlaneSpec(double[] point, double[] normal, double margin, double staticFriction, double kineticFriction) {
             this.point = point; this.normal = normal; this.margin = margin;
             this.staticFriction = staticFriction; this.kineticFriction = kineticFriction;
+        }
+    }
+
+    /** Where a kinematic collider's centre goes: fixed, linear, circle or oscillation. */
+    public static final class PathSpec {
+        public final String type;
+        /** fixed: centre; linear: start; circle and oscillation: centre. */
+        public final double[] centre;
+        /** linear: velocity (m/s); oscillation: amplitude (m). */
+        public final double[] vector;
+        /** circle: radius (m). */
+        public final double radius;
+        /** circle: angular speed (rad/s); oscillation: frequency (Hz). */
+        public final double rate;
+
+        PathSpec(String type, double[] centre, double[] vector, double radius, double rate) {
+            this.type = type; this.centre = centre; this.vector = vector; this.radius = radius; this.rate = rate;
+        }
+    }
+
+    /**
+     * A kinematic box (half extents, rotation in degrees about x, y, z) or capsule (axis, half length,
+     * radius), its path and spin.
+     */
+    public static final class SolidSpec {
+        /** "box" or "capsule". */
+        public final String type;
+        /** box: half extents (m) and rotation (degrees); null for a capsule. */
+        public final double[] halfExtents, rotation;
+        /** capsule: axis direction; null for a box. */
+        public final double[] axis;
+        /** capsule: half length between its caps' centres and radius (m). */
+        public final double halfLength, radius;
+        public final double margin, staticFriction, kineticFriction;
+        public final double[] angularVelocity;
+        public final PathSpec path;
+
+        SolidSpec(String type, double[] halfExtents, double[] rotation, double[] axis, double halfLength, double radius,
+                  double margin, double staticFriction, double kineticFriction, double[] angularVelocity, PathSpec path) {
+            this.type = type; this.halfExtents = halfExtents; this.rotation = rotation; this.axis = axis;
+            this.halfLength = halfLength; this.radius = radius; this.margin = margin; this.staticFriction = staticFriction;
+            this.kineticFriction = kineticFriction; this.angularVelocity = angularVelocity; this.path = path;
+        }
+
+        /** The largest distance from the centre to the solid's surface, m. */
+        public double extent() {
+            return halfExtents != null ? Math.sqrt(halfExtents[0] * halfExtents[0] + halfExtents[1] * halfExtents[1] + halfExtents[2] * halfExtents[2])
+                    : halfLength + radius;
         }
     }
 

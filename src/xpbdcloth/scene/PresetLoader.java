@@ -32,7 +32,7 @@ import xpbdcloth.mesh.ObjReader;
  */
 public final class PresetLoader {
     /** The presets that ship with the project, in the order the sketch offers them. */
-    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth");
+    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth", "table", "arm");
 
     private static final ObjectMapper JSON = new ObjectMapper()
             .enable(JsonParser.Feature.STRICT_DUPLICATE_DETECTION);
@@ -198,16 +198,28 @@ public final class PresetLoader {
             Node ss = optional(root, "spheres");
             if (ss != null) for (Node s : array(ss, Limits.MAX_SPHERES)) spheres.add(sphere(s));
             List<Preset.PlaneSpec> planes = new ArrayList<>();
+            List<Preset.SolidSpec> solids = new ArrayList<>();
             Node cs = optional(root, "colliders");
-            if (cs != null) for (Node c : array(cs, Limits.MAX_SPHERES)) planes.add(collider(c));
+            if (cs != null) for (Node c : array(cs, Limits.MAX_SPHERES)) {
+                String type = c.json.isObject() && c.json.has("type") ? string(required(c, "type")) : "";
+                switch (type) {
+                    case "plane": planes.add(plane(c)); break;
+                    case "sphere": spheres.add(sphere(c)); break;
+                    case "box": case "capsule": solids.add(solid(c, type)); break;
+                    default: throw fail(c.child("type"), (type.isEmpty() ? "is missing" : "was \"" + type + "\"") + "; one of plane, sphere, box, capsule");
+                }
+            }
+            if (spheres.size() + planes.size() + solids.size() > Limits.MAX_SPHERES)
+                throw fail("colliders", "at most " + Limits.MAX_SPHERES + " colliders with the spheres, had " + (spheres.size() + planes.size() + solids.size()));
+            checkThickness(cloth, spheres, planes, solids);
             List<Preset.PinMotion> motions = new ArrayList<>();
             Node ms = optional(root, "pinMotions");
             if (ms != null) for (Node m : array(ms, Limits.MAX_PIN_MOTIONS)) motions.add(pinMotion(m, cloth));
             Node w = optional(root, "wind");
             long particles = cloth.mesh != null ? cloth.mesh.vertexCount() : (long) cloth.columns * cloth.rows;
-            String tooMuch = Limits.workProblem(particles, solver.iterations, solver.substeps, spheres.size() + planes.size(), solver.type != xpbdcloth.engine.SolverType.GAUSS_SEIDEL);
+            String tooMuch = Limits.workProblem(particles, solver.iterations, solver.substeps, spheres.size() + planes.size() + solids.size(), solver.type != xpbdcloth.engine.SolverType.GAUSS_SEIDEL);
             if (tooMuch != null) throw fail("solver", tooMuch);
-            return new Preset(file, name, description, cloth, families, solver, spheres, planes, motions, w == null ? null : wind(w));
+            return new Preset(file, name, description, cloth, families, solver, spheres, planes, solids, motions, w == null ? null : wind(w));
         }
 
         Preset.Cloth cloth(Node n) {
@@ -379,32 +391,78 @@ public final class PresetLoader {
         }
 
         /** A collider of the "colliders" list: so far a plane (spheres are listed under "spheres"). */
-        Preset.PlaneSpec collider(Node n) {
+        Preset.PlaneSpec plane(Node n) {
             object(n, Set.of("type", "point", "normal", "margin", "staticFriction", "kineticFriction"));
-            Node t = required(n, "type");
-            if (!string(t).equals("plane"))
-                throw fail(t.path, "must be \"plane\" (spheres are listed under \"spheres\"; boxes and capsules are not built yet), was \"" + string(t) + "\"");
             double[] point = vector(required(n, "point"), Limits.POSITION);
-            Node nn = required(n, "normal");
-            double[] normal = vector(nn, Limits.NORMAL);
-            double len = Math.sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
-            if (len < 1e-3) throw fail(nn.path, "must not be (almost) zero, had length " + len);
-            Node m = optional(n, "margin");
-            double margin = m == null ? 0 : number(m, Limits.MARGIN);
-            return new Preset.PlaneSpec(point, normal, margin, number(required(n, "staticFriction"), Limits.FRICTION),
+            double[] normal = direction(required(n, "normal"));
+            return new Preset.PlaneSpec(point, normal, margin(n), number(required(n, "staticFriction"), Limits.FRICTION),
                     number(required(n, "kineticFriction"), Limits.FRICTION));
         }
 
-        Preset.SphereSpec sphere(Node n) {
-            object(n, Set.of("radius", "margin", "staticFriction", "kineticFriction", "angularVelocity", "path"));
-            double radius = number(required(n, "radius"), Limits.SPHERE_RADIUS);
+        /** A direction: components in [-1, 1], not (almost) zero. */
+        double[] direction(Node nn) {
+            double[] d = vector(nn, Limits.NORMAL);
+            double len = Math.sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            if (len < 1e-3) throw fail(nn.path, "must not be (almost) zero, had length " + len);
+            return d;
+        }
+
+        double margin(Node n) {
             Node m = optional(n, "margin");
-            double margin = m == null ? 0 : number(m, Limits.MARGIN);
+            return m == null ? 0 : number(m, Limits.MARGIN);
+        }
+
+        /** A box (half extents, rotation) or a capsule (axis, half length, radius), with path, spin and friction. */
+        Preset.SolidSpec solid(Node n, String type) {
+            boolean box = type.equals("box");
+            Set<String> allowed = new java.util.HashSet<>(Set.of("type", "margin", "staticFriction", "kineticFriction", "angularVelocity", "path"));
+            allowed.addAll(box ? Set.of("halfExtents", "rotation") : Set.of("axis", "halfLength", "radius"));
+            object(n, allowed);
             double mus = number(required(n, "staticFriction"), Limits.FRICTION);
             double muk = number(required(n, "kineticFriction"), Limits.FRICTION);
             Node w = optional(n, "angularVelocity");
             double[] omega = w == null ? new double[3] : vector(w, Limits.ANGULAR_VELOCITY);
-            Node p = required(n, "path");
+            Preset.PathSpec path = path(required(n, "path"));
+            if (box) {
+                double[] half = vector(required(n, "halfExtents"), Limits.SPHERE_RADIUS);
+                Node r = optional(n, "rotation");
+                return new Preset.SolidSpec(type, half, r == null ? new double[3] : vector(r, Limits.ROTATION), null, 0, 0, margin(n), mus, muk, omega, path);
+            }
+            return new Preset.SolidSpec(type, null, null, direction(required(n, "axis")), number(required(n, "halfLength"), Limits.PATH_RADIUS),
+                    number(required(n, "radius"), Limits.SPHERE_RADIUS), margin(n), mus, muk, omega, path);
+        }
+
+        /**
+         * The cloth's thickness is twice a collider's margin; thicker than the cloth's shortest edge, contacts
+         * would hold particles farther apart than the cloth's own spacing, and a draped cloth would stand off
+         * its collider in steps.
+         */
+        void checkThickness(Preset.Cloth cloth, List<Preset.SphereSpec> spheres, List<Preset.PlaneSpec> planes, List<Preset.SolidSpec> solids) {
+            double edge = cloth.shortestEdge();
+            for (int i = 0; i < spheres.size(); i++) checkThickness(spheres.get(i).margin, edge, "spheres[" + i + "].margin");
+            for (int i = 0; i < planes.size(); i++) checkThickness(planes.get(i).margin, edge, "colliders (plane " + i + ").margin");
+            for (int i = 0; i < solids.size(); i++) checkThickness(solids.get(i).margin, edge, "colliders (" + solids.get(i).type + " " + i + ").margin");
+        }
+
+        void checkThickness(double margin, double edge, String field) {
+            if (2 * margin > edge)
+                throw fail(field, String.format(java.util.Locale.ROOT, "makes the cloth %.4g m thick (twice the margin), more than its shortest edge %.4g m:"
+                        + " contacts would hold the particles farther apart than the cloth's own spacing", 2 * margin, edge));
+        }
+
+        Preset.SphereSpec sphere(Node n) {
+            object(n, Set.of("type", "radius", "margin", "staticFriction", "kineticFriction", "angularVelocity", "path"));
+            double radius = number(required(n, "radius"), Limits.SPHERE_RADIUS);
+            double mus = number(required(n, "staticFriction"), Limits.FRICTION);
+            double muk = number(required(n, "kineticFriction"), Limits.FRICTION);
+            Node w = optional(n, "angularVelocity");
+            double[] omega = w == null ? new double[3] : vector(w, Limits.ANGULAR_VELOCITY);
+            Preset.PathSpec p = path(required(n, "path"));
+            return new Preset.SphereSpec(radius, margin(n), mus, muk, omega, p.type, p.centre, p.vector, p.radius, p.rate);
+        }
+
+        /** A collider's path: fixed, linear, circle or oscillation. */
+        Preset.PathSpec path(Node p) {
             object(p, Set.of("type", "centre", "start", "velocity", "radius", "angularSpeed", "amplitude", "frequency"));
             Node typeNode = p.json.has("type") ? required(p, "type") : null;
             if (typeNode == null) throw fail(p.child("type"), "is missing; one of fixed, linear, circle, oscillation");
@@ -412,17 +470,17 @@ public final class PresetLoader {
             switch (type) {
                 case "fixed":
                     only(p, Set.of("type", "centre"));
-                    return new Preset.SphereSpec(radius, margin, mus, muk, omega, type, vector(required(p, "centre"), Limits.POSITION), new double[3], 0, 0);
+                    return new Preset.PathSpec(type, vector(required(p, "centre"), Limits.POSITION), new double[3], 0, 0);
                 case "linear":
                     only(p, Set.of("type", "start", "velocity"));
-                    return new Preset.SphereSpec(radius, margin, mus, muk, omega, type, vector(required(p, "start"), Limits.POSITION), vector(required(p, "velocity"), Limits.SPEED), 0, 0);
+                    return new Preset.PathSpec(type, vector(required(p, "start"), Limits.POSITION), vector(required(p, "velocity"), Limits.SPEED), 0, 0);
                 case "circle":
                     only(p, Set.of("type", "centre", "radius", "angularSpeed"));
-                    return new Preset.SphereSpec(radius, margin, mus, muk, omega, type, vector(required(p, "centre"), Limits.POSITION), new double[3],
+                    return new Preset.PathSpec(type, vector(required(p, "centre"), Limits.POSITION), new double[3],
                             number(required(p, "radius"), Limits.PATH_RADIUS), number(required(p, "angularSpeed"), Limits.ANGULAR_SPEED));
                 case "oscillation":
                     only(p, Set.of("type", "centre", "amplitude", "frequency"));
-                    return new Preset.SphereSpec(radius, margin, mus, muk, omega, type, vector(required(p, "centre"), Limits.POSITION), vector(required(p, "amplitude"), Limits.DISPLACEMENT),
+                    return new Preset.PathSpec(type, vector(required(p, "centre"), Limits.POSITION), vector(required(p, "amplitude"), Limits.DISPLACEMENT),
                             0, number(required(p, "frequency"), Limits.FREQUENCY));
                 default:
                     throw fail(p.child("type"), "must be one of fixed, linear, circle, oscillation, was \"" + type + "\"");

@@ -9,6 +9,9 @@ import xpbdcloth.engine.SolverSettings;
 import xpbdcloth.engine.Simulation;
 import xpbdcloth.engine.Sphere;
 import xpbdcloth.engine.SpherePath;
+import xpbdcloth.engine.Box;
+import xpbdcloth.engine.Capsule;
+import xpbdcloth.engine.RigidCollider;
 import xpbdcloth.engine.Wind;
 
 /**
@@ -36,6 +39,12 @@ public final class Scene {
 
         for (Preset.PlaneSpec pl : preset.planes)
             simulation.add(new Plane(pl.point, pl.normal, pl.margin, pl.staticFriction, pl.kineticFriction));
+        for (Preset.SolidSpec sp : preset.solids) {
+            RigidCollider solid = sp.type.equals("box")
+                    ? new Box(path(sp.path), sp.halfExtents, sp.rotation, sp.margin, sp.staticFriction, sp.kineticFriction)
+                    : new Capsule(path(sp.path), sp.axis, sp.halfLength, sp.radius, sp.margin, sp.staticFriction, sp.kineticFriction);
+            simulation.add(solid.spin(sp.angularVelocity[0], sp.angularVelocity[1], sp.angularVelocity[2]));
+        }
         for (Preset.SphereSpec sp : preset.spheres) {
             Sphere sphere = new Sphere(path(sp), sp.radius, sp.margin, sp.staticFriction, sp.kineticFriction)
                     .spin(sp.angularVelocity[0], sp.angularVelocity[1], sp.angularVelocity[2]);
@@ -105,14 +114,16 @@ public final class Scene {
     /** A built-in scene by name. */
     public static Scene builtIn(String name) { return of(PresetLoader.builtIn(name)); }
 
-    static SpherePath path(Preset.SphereSpec s) {
+    static SpherePath path(Preset.SphereSpec s) { return path(new Preset.PathSpec(s.path, s.centre, s.vector, s.pathRadius, s.rate)); }
+
+    static SpherePath path(Preset.PathSpec s) {
         double[] c = s.centre, v = s.vector;
-        switch (s.path) {
+        switch (s.type) {
             case "linear": return SpherePath.linear(c[0], c[1], c[2], v[0], v[1], v[2]);
-            case "circle": return SpherePath.circle(c[0], c[1], c[2], s.pathRadius, s.rate);
+            case "circle": return SpherePath.circle(c[0], c[1], c[2], s.radius, s.rate);
             case "oscillation": return SpherePath.oscillation(c[0], c[1], c[2], v[0], v[1], v[2], s.rate);
             case "fixed": return SpherePath.fixed(c[0], c[1], c[2]);
-            default: throw new IllegalArgumentException("path.type must be fixed, linear, circle or oscillation, was " + s.path);
+            default: throw new IllegalArgumentException("path.type must be fixed, linear, circle or oscillation, was " + s.type);
         }
     }
 

@@ -8,8 +8,6 @@ import processing.core.PConstants;
 import processing.core.PGraphics;
 import processing.event.KeyEvent;
 import processing.event.MouseEvent;
-import xpbdcloth.engine.AttachmentConstraint;
-import xpbdcloth.engine.Particles;
 import xpbdcloth.engine.Sphere;
 import xpbdcloth.mesh.ClothMesh;
 import xpbdcloth.scene.ObjExport;
@@ -71,11 +69,9 @@ public final class ClothApp {
     private Preset framedPreset;
     private boolean framedSideBySide;
 
-    // Grab: the attachments (one per running scene, same particle) and the depth plane point.
-    private AttachmentConstraint[] grabs;
-    private final double[] grabPoint = new double[3], scratch = new double[3];
-    /** Where the grabbed particle was in each running scene when grabbed. */
-    private final double[][] grabStarts = new double[2][3];
+    /** The particle the mouse holds, or null. */
+    private Grab grab;
+    private final double[] scratch = new double[3];
 
     public ClothApp(PApplet app) { this(app, "hanging", false, null); }
 
@@ -89,7 +85,7 @@ public final class ClothApp {
             recording.folder.mkdirs();
         }
         camera = new OrbitCamera(0, 1, 0, 3, 0.3, 30).attach(app);
-        camera.ignoreWhen(e -> e.isControlDown() || grabs != null);
+        camera.ignoreWhen(e -> e.isControlDown() || grab != null);
         frame();
         app.textFont(app.createFont("DejaVu Sans Mono", 13, true));
         app.registerMethod("draw", this);
@@ -204,6 +200,10 @@ public final class ClothApp {
                 g.translate((float) state.offsetX(i), 0, 0);
                 GroundShadow.drawMesh(g, sc.cloth().particles().positions(), sc.cloth().triangles());
                 if (state.showSpheres) for (Sphere s : sc.simulation().spheres()) GroundShadow.drawSphere(g, s);
+                if (state.showSpheres) for (xpbdcloth.engine.RigidCollider s : sc.simulation().solids()) {
+                    SolidMesh m = renderer.placed(s);
+                    GroundShadow.drawMesh(g, m.world, m.triangles);
+                }
                 g.popMatrix();
             }
         }
@@ -290,54 +290,23 @@ public final class ClothApp {
     public void mouseEvent(MouseEvent e) {
         int action = e.getAction();
         if (action == MouseEvent.PRESS && e.getButton() == PConstants.LEFT && e.isControlDown()) grab(e.getX(), e.getY());
-        else if (action == MouseEvent.DRAG && grabs != null) drag(e.getX(), e.getY());
-        else if (action == MouseEvent.RELEASE && grabs != null) release();
+        else if (action == MouseEvent.DRAG && grab != null) drag(e.getX(), e.getY());
+        else if (action == MouseEvent.RELEASE && grab != null) release();
     }
 
     /** Picks the particle nearest the pointer on screen (within 30 px) and holds it in every running scene. */
     private void grab(int mx, int my) {
-        List<Scene> running = state.running();
         camera.setViewport(app.width, app.height);
-        int best = -1;
-        double bestD2 = GRAB_PIXELS * GRAB_PIXELS;
-        int bestScene = 0;
-        for (int s = 0; s < running.size(); s++) {
-            Particles p = running.get(s).cloth().particles();
-            double ox = state.offsetX(s);
-            for (int i = 0; i < p.count(); i++) {
-                camera.project(p.x(i) + ox, p.y(i), p.z(i), scratch);
-                if (scratch[2] <= 0) continue;
-                double d2 = (scratch[0] - mx) * (scratch[0] - mx) + (scratch[1] - my) * (scratch[1] - my);
-                if (d2 < bestD2) { bestD2 = d2; best = i; bestScene = s; }
-            }
-        }
-        if (best < 0) return;
-        Particles p = running.get(bestScene).cloth().particles();
-        grabPoint[0] = p.x(best) + state.offsetX(bestScene);
-        grabPoint[1] = p.y(best);
-        grabPoint[2] = p.z(best);
-        grabs = new AttachmentConstraint[running.size()];
-        for (int s = 0; s < running.size(); s++) {
-            Particles q = running.get(s).cloth().particles();
-            grabStarts[s][0] = q.x(best);
-            grabStarts[s][1] = q.y(best);
-            grabStarts[s][2] = q.z(best);
-            grabs[s] = running.get(s).simulation().attach(best, q.x(best), q.y(best), q.z(best));
-        }
+        grab = Grab.pick(state, (x, y, z, out) -> { camera.project(x, y, z, out); out[3] = out[2]; }, mx, my, GRAB_PIXELS);
     }
 
     private void drag(int mx, int my) {
-        camera.unprojectOnViewPlane(mx, my, grabPoint[0], grabPoint[1], grabPoint[2], scratch);
-        double dx = scratch[0] - grabPoint[0], dy = scratch[1] - grabPoint[1], dz = scratch[2] - grabPoint[2];
-        List<Scene> running = state.running();
-        // Each scene's particle follows the same displacement from where it was grabbed.
-        for (int s = 0; s < grabs.length && s < running.size(); s++)
-            grabs[s].moveTarget(grabStarts[s][0] + dx, grabStarts[s][1] + dy, grabStarts[s][2] + dz);
+        camera.unprojectOnViewPlane(mx, my, grab.x, grab.y, grab.z, scratch);
+        grab.moveTo(scratch[0], scratch[1], scratch[2]);
     }
 
     private void release() {
-        List<Scene> running = state.running();
-        for (int s = 0; s < grabs.length && s < running.size(); s++) running.get(s).simulation().release(grabs[s]);
-        grabs = null;
+        grab.release();
+        grab = null;
     }
 }

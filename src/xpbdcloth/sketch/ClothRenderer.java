@@ -7,6 +7,7 @@ import xpbdcloth.engine.ConstraintBlock;
 import xpbdcloth.engine.DistanceBlock;
 import xpbdcloth.engine.Particles;
 import xpbdcloth.engine.Plane;
+import xpbdcloth.engine.RigidCollider;
 import xpbdcloth.engine.Sphere;
 import xpbdcloth.mesh.VertexNormals;
 import xpbdcloth.scene.Scene;
@@ -92,6 +93,7 @@ public final class ClothRenderer {
             drawParticles(g, sc.cloth().particles(), state.showParticles);
             if (state.showSpheres) for (Sphere s : sc.simulation().spheres()) drawSphere(g, s);
             if (state.showSpheres) for (Plane pl : sc.simulation().planes()) drawPlane(g, pl, sc.cloth());
+            if (state.showSpheres) for (RigidCollider s : sc.simulation().solids()) drawSolid(g, s);
             g.popMatrix();
         }
     }
@@ -202,6 +204,26 @@ public final class ClothRenderer {
     }
 
     /** A sphere with two great circles turned by its spin angle, so rotation is visible. */
+    /** Each box and capsule's triangles, made when first drawn; forgotten with the collider (a reset makes new ones). */
+    private final java.util.WeakHashMap<RigidCollider, SolidMesh> solidMeshes = new java.util.WeakHashMap<>();
+
+    /** The collider's mesh, placed where it is now. */
+    SolidMesh placed(RigidCollider s) {
+        SolidMesh m = solidMeshes.computeIfAbsent(s, SolidMesh::new);
+        m.place();
+        return m;
+    }
+
+    /** A box or a capsule, in the spheres' glazed ceramic. */
+    void drawSolid(PGraphics g, RigidCollider s) {
+        g.noStroke();
+        g.fill(COLLIDER[0], COLLIDER[1], COLLIDER[2]);
+        g.specular(230, 226, 215);
+        g.shininess(40);
+        placed(s).draw(g);
+        g.specular(0);
+    }
+
     void drawSphere(PGraphics g, Sphere s) {
         g.pushMatrix();
         g.translate((float) s.centreX(), (float) s.centreY(), (float) s.centreZ());

@@ -23,6 +23,12 @@ public final class KeyBindings {
         return null;
     }
 
+    /** The key of built-in scene i: 1–9, then 0 for the tenth. */
+    public static char sceneKey(int i) {
+        if (i < 0 || i > 9) throw new IllegalArgumentException("scene index must be in [0, 9] to have a key, was " + i);
+        return i < 9 ? (char) ('1' + i) : '0';
+    }
+
     private static Object material(SketchState s) {
         List<Object> out = new ArrayList<>();
         for (ConstraintFamily f : new ConstraintFamily[] {ConstraintFamily.STRUCTURAL, ConstraintFamily.SHEAR, ConstraintFamily.BEND})
@@ -48,7 +54,7 @@ public final class KeyBindings {
         b.add(new KeyBinding('b', "side by side: PBD left, XPBD right", SketchState::toggleSideBySide, SketchState::sideBySide));
         for (int i = 0; i < xpbdcloth.scene.PresetLoader.BUILT_IN.size(); i++) {
             final int scene = i;
-            b.add(new KeyBinding((char) ('1' + i), "scene: " + xpbdcloth.scene.PresetLoader.BUILT_IN.get(i),
+            b.add(new KeyBinding(sceneKey(i), "scene: " + xpbdcloth.scene.PresetLoader.BUILT_IN.get(i),
                     s -> s.selectScene(scene), s -> s.preset().name));
         }
         b.add(new KeyBinding('r', "reset the scene", SketchState::reset, SketchState::time));

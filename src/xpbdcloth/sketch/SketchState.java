@@ -209,7 +209,7 @@ public final class SketchState {
     private boolean refusedAsTooMuchWork(int iterations, int substeps, SolverType solver, String what) {
         for (Scene s : running()) {
             long particles = s.cloth().particles().count();
-            if (Limits.workProblem(particles, iterations, substeps, s.simulation().spheres().size(), solver != SolverType.GAUSS_SEIDEL) == null) continue;
+            if (Limits.workProblem(particles, iterations, substeps, s.simulation().colliderCount(), solver != SolverType.GAUSS_SEIDEL) == null) continue;
             error(what + " would ask too much of a step for " + particles + " particles (the presets' work limit): unchanged");
             return true;
         }
@@ -356,7 +356,7 @@ public final class SketchState {
                 int particles = s.cloth().particles().count();
                 error(String.format(java.util.Locale.ROOT, "the cloth stretches %.0f %%: %d sweeps x %d substeps cannot hold %d particles; %s",
                         100 * strain, shared.iterations(), shared.substeps(), particles,
-                        tearingAdvice(particles, shared.iterations(), shared.substeps(), s.simulation().spheres().size(), shared.solver())));
+                        tearingAdvice(particles, shared.iterations(), shared.substeps(), s.simulation().colliderCount(), shared.solver())));
                 return;
             }
         }

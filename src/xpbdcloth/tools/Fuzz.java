@@ -9,6 +9,8 @@ import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import xpbdcloth.engine.AttachmentConstraint;
+import xpbdcloth.engine.Box;
+import xpbdcloth.engine.Capsule;
 import xpbdcloth.engine.Cloth;
 import xpbdcloth.engine.ClothBuilder;
 import xpbdcloth.engine.ConstraintFamily;
@@ -198,10 +200,18 @@ public final class Fuzz implements Callable<Integer> {
                 case 2: path = SpherePath.circle(cx, cy, cz, r.nextDouble(), 100 * r.nextGaussian()); break;
                 default: path = SpherePath.oscillation(cx, cy, cz, r.nextDouble(), r.nextDouble(), r.nextDouble(), 10 * r.nextDouble());
             }
-            Sphere sphere = new Sphere(path, bad(illegal, "radius", 0.05 + r.nextDouble()), 0.01 * r.nextDouble(),
-                    bad(illegal, "staticFriction", 2 * r.nextDouble()), 2 * r.nextDouble())
-                    .spin(100 * r.nextGaussian(), 100 * r.nextGaussian(), 100 * r.nextGaussian());
-            sim.add(sphere);
+            int kind = r.nextInt(3);
+            // An illegal radius is drawn for a sphere or a capsule, whose size is a radius (a box's is named halfExtents).
+            if (kind == 1 && illegal != null && illegal[0].equals("radius")) kind = 2;
+            double size = bad(illegal, "radius", 0.05 + r.nextDouble()), margin = 0.01 * r.nextDouble();
+            double mus = bad(illegal, "staticFriction", 2 * r.nextDouble()), muk = 2 * r.nextDouble();
+            double wx = 100 * r.nextGaussian(), wy = 100 * r.nextGaussian(), wz = 100 * r.nextGaussian();
+            // A sphere, a box or a capsule of about that size, on that path, spinning.
+            switch (kind) {
+                case 0: sim.add(new Sphere(path, size, margin, mus, muk).spin(wx, wy, wz)); break;
+                case 1: sim.add(new Box(path, new double[] {size, size * r.nextDouble() + 1e-3, size}, new double[] {360 * r.nextDouble(), 360 * r.nextDouble(), 0}, margin, mus, muk).spin(wx, wy, wz)); break;
+                default: sim.add(new Capsule(path, new double[] {r.nextGaussian(), r.nextGaussian() + 1e-3, r.nextGaussian()}, size * r.nextDouble(), size, margin, mus, muk).spin(wx, wy, wz));
+            }
         }
         // Wind in one case of four (within the presets' ranges), two threads in one of ten.
         if (r.nextInt(4) == 0)

@@ -72,6 +72,18 @@ final class PresetFuzz {
 
         String num(double v) { return Double.toString(v); }
 
+        /** A collider's path: fixed, linear, circle or oscillation. */
+        String path() {
+            switch (r.nextInt(4)) {
+                case 0: return "{ \"type\": \"fixed\", \"centre\": " + vec(Limits.POSITION) + " }";
+                case 1: return "{ \"type\": \"linear\", \"start\": " + vec(Limits.POSITION) + ", \"velocity\": " + vec(Limits.SPEED) + " }";
+                case 2: return "{ \"type\": \"circle\", \"centre\": " + vec(Limits.POSITION) + ", \"radius\": " + num(draw(Limits.PATH_RADIUS, false))
+                        + ", \"angularSpeed\": " + num(draw(Limits.ANGULAR_SPEED, false)) + " }";
+                default: return "{ \"type\": \"oscillation\", \"centre\": " + vec(Limits.POSITION) + ", \"amplitude\": " + vec(Limits.DISPLACEMENT)
+                        + ", \"frequency\": " + num(draw(Limits.FREQUENCY, false)) + " }";
+            }
+        }
+
         String vec(Limits.Range range) { return "[" + num(draw(range, false)) + ", " + num(draw(range, false)) + ", " + num(draw(range, false)) + "]"; }
 
         String json() {
@@ -121,24 +133,32 @@ final class PresetFuzz {
                 .append(", \"mullerCorrection\": ").append(r.nextBoolean()).append(", \"gravity\": ").append(vec(Limits.GRAVITY))
                 .append(", \"damping\": ").append(num(draw(Limits.DAMPING, false)))
                 .append(", \"type\": \"").append(global ? (r.nextBoolean() ? "jacobi-pcg" : "multigrid-pcg") : "gauss-seidel").append("\" }");
+            // A collider's margin is half the cloth's thickness, which may not exceed the cloth's spacing.
+            double halfEdge = 0.5 * Math.min(columns > 1 ? width / (columns - 1) : Double.POSITIVE_INFINITY, rows > 1 ? height / (rows - 1) : Double.POSITIVE_INFINITY);
             int spheres = r.nextInt(3);
             if (spheres > 0) {
                 json.append(", \"spheres\": [");
                 for (int k = 0; k < spheres; k++) {
                     json.append(k == 0 ? "" : ", ").append("{ \"radius\": ").append(num(draw(Limits.SPHERE_RADIUS, true)))
-                        .append(", \"margin\": ").append(num(draw(Limits.MARGIN, false)))
+                        .append(", \"margin\": ").append(num(Math.min(halfEdge, draw(Limits.MARGIN, false))))
                         .append(", \"staticFriction\": ").append(num(draw(Limits.FRICTION, false)))
                         .append(", \"kineticFriction\": ").append(num(draw(Limits.FRICTION, false)))
-                        .append(", \"angularVelocity\": ").append(vec(Limits.ANGULAR_VELOCITY)).append(", \"path\": ");
-                    switch (r.nextInt(4)) {
-                        case 0: json.append("{ \"type\": \"fixed\", \"centre\": ").append(vec(Limits.POSITION)).append(" }"); break;
-                        case 1: json.append("{ \"type\": \"linear\", \"start\": ").append(vec(Limits.POSITION)).append(", \"velocity\": ").append(vec(Limits.SPEED)).append(" }"); break;
-                        case 2: json.append("{ \"type\": \"circle\", \"centre\": ").append(vec(Limits.POSITION)).append(", \"radius\": ").append(num(draw(Limits.PATH_RADIUS, false)))
-                                .append(", \"angularSpeed\": ").append(num(draw(Limits.ANGULAR_SPEED, false))).append(" }"); break;
-                        default: json.append("{ \"type\": \"oscillation\", \"centre\": ").append(vec(Limits.POSITION)).append(", \"amplitude\": ").append(vec(Limits.DISPLACEMENT))
-                                .append(", \"frequency\": ").append(num(draw(Limits.FREQUENCY, false))).append(" }");
-                    }
-                    json.append(" }");
+                        .append(", \"angularVelocity\": ").append(vec(Limits.ANGULAR_VELOCITY)).append(", \"path\": ").append(path()).append(" }");
+                }
+                json.append("]");
+            }
+            int solids = r.nextInt(3);
+            if (solids > 0) {
+                json.append(", \"colliders\": [");
+                for (int k = 0; k < solids; k++) {
+                    json.append(k == 0 ? "" : ", ");
+                    if (r.nextBoolean()) json.append("{ \"type\": \"box\", \"halfExtents\": ").append(vec(Limits.SPHERE_RADIUS)).append(", \"rotation\": ").append(vec(Limits.ROTATION));
+                    else json.append("{ \"type\": \"capsule\", \"axis\": [0, ").append(num(0.5 + 0.5 * r.nextDouble())).append(", ").append(num(r.nextDouble() - 0.5))
+                            .append("], \"halfLength\": ").append(num(draw(Limits.PATH_RADIUS, false))).append(", \"radius\": ").append(num(draw(Limits.SPHERE_RADIUS, true)));
+                    json.append(", \"margin\": ").append(num(Math.min(halfEdge, draw(Limits.MARGIN, false))))
+                        .append(", \"staticFriction\": ").append(num(draw(Limits.FRICTION, false)))
+                        .append(", \"kineticFriction\": ").append(num(draw(Limits.FRICTION, false)))
+                        .append(", \"angularVelocity\": ").append(vec(Limits.ANGULAR_VELOCITY)).append(", \"path\": ").append(path()).append(" }");
                 }
                 json.append("]");
             }

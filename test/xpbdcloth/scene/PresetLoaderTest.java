@@ -38,7 +38,7 @@ class PresetLoaderTest {
         PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse("big.json",
                 big.replace("\"iterations\": 2", "\"iterations\": 1000, \"substeps\": 100")));
         assertEquals("solver", e.field());
-        assertTrue(e.problem().startsWith("particles × substeps × (iterations + spheres) must be at most 33554432"), e.getMessage());
+        assertTrue(e.problem().startsWith("particles × substeps × (iterations + colliders) must be at most 33554432"), e.getMessage());
         assertTrue(e.problem().contains("262144 × 100 × (1000 + 0) = 26214400000"), e.getMessage());
         assertEquals(128, PresetLoader.parse("big.json", big.replace("\"iterations\": 2", "\"iterations\": 128")).solver.iterations);
 
@@ -49,19 +49,72 @@ class PresetLoaderTest {
         assertEquals(64, PresetLoader.parse("g.json", global.replace("\"columns\": 4, \"rows\": 4", "\"columns\": 64, \"rows\": 64")).cloth.columns);
     }
 
-    /** Plane colliders: a floor loads into the scene's simulation; a box (not built yet) and a zero normal are named. */
+    /** Plane colliders: a floor loads into the scene's simulation; an unknown type and a zero normal are named. */
     @Test
     void planeCollidersLoadAndBadOnesAreNamed() {
-        String floor = valid().replace(" \"solver\":", " \"colliders\": [{ \"type\": \"plane\", \"point\": [0, -1, 0], \"normal\": [0, 1, 0],"
-                + " \"margin\": 0.005, \"staticFriction\": 0.5, \"kineticFriction\": 0.4 }], \"solver\":");
+        String floor = withColliders("{ \"type\": \"plane\", \"point\": [0, -1, 0], \"normal\": [0, 1, 0],"
+                + " \"margin\": 0.005, \"staticFriction\": 0.5, \"kineticFriction\": 0.4 }");
         Scene scene = Scene.of(PresetLoader.parse("floor.json", floor));
         assertEquals(1, scene.simulation().planes().size());
         assertEquals(1.005, scene.simulation().planes().get(0).distance(0, 0.005, 0), 1e-12, "a floor at y = -1");
-        PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse("box.json", floor.replace("\"type\": \"plane\"", "\"type\": \"box\"")));
+        PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse("cone.json", floor.replace("\"type\": \"plane\"", "\"type\": \"cone\"")));
         assertEquals("colliders[0].type", e.field(), e.getMessage());
-        assertTrue(e.problem().contains("boxes and capsules are not built yet"), e.getMessage());
+        assertEquals("was \"cone\"; one of plane, sphere, box, capsule", e.problem());
         e = assertThrows(PresetException.class, () -> PresetLoader.parse("flat.json", floor.replace("\"normal\": [0, 1, 0]", "\"normal\": [0, 0, 0]")));
         assertEquals("colliders[0].normal", e.field(), e.getMessage());
+    }
+
+    static String withColliders(String colliders) {
+        return valid().replace(" \"solver\":", " \"colliders\": [" + colliders + "], \"solver\":");
+    }
+
+    static final String BOX = "{ \"type\": \"box\", \"halfExtents\": [0.3, 0.2, 0.1], \"rotation\": [0, 90, 0], \"margin\": 0.005,"
+            + " \"staticFriction\": 0.6, \"kineticFriction\": 0.45, \"path\": { \"type\": \"fixed\", \"centre\": [0, 0.2, 0] } }";
+    static final String CAPSULE = "{ \"type\": \"capsule\", \"axis\": [0, 0, 0.5], \"halfLength\": 0.25, \"radius\": 0.05,"
+            + " \"staticFriction\": 0.6, \"kineticFriction\": 0.45, \"angularVelocity\": [0, 0, 3],"
+            + " \"path\": { \"type\": \"oscillation\", \"centre\": [0, 1, 0], \"amplitude\": [0.2, 0, 0], \"frequency\": 0.5 } }";
+
+    /**
+     * Boxes and capsules load with their shape, pose, path and spin: the scene's box turned 90° about y has
+     * its x half extent along z; the capsule's axis (given as (0, 0, 2)) is z, its end caps 0.25 m from the
+     * centre, and it follows its oscillation.
+     */
+    @Test
+    void boxesAndCapsulesLoadWithTheirShapeAndPose() {
+        Scene scene = Scene.of(PresetLoader.parse("solids.json", withColliders(BOX + ", " + CAPSULE)));
+        java.util.List<xpbdcloth.engine.RigidCollider> solids = scene.simulation().solids();
+        assertEquals(2, solids.size());
+        xpbdcloth.engine.Box box = (xpbdcloth.engine.Box) solids.get(0);
+        double[] r = new double[9];
+        box.rotation(r);
+        // Local x (the 0.3 m half extent) turned 90° about y points along −z: column 0 of R.
+        assertEquals(0, r[0], 1e-12);
+        assertEquals(-1, r[6], 1e-12);
+        assertEquals(0.2, box.centreY(), 0);
+        xpbdcloth.engine.Capsule capsule = (xpbdcloth.engine.Capsule) solids.get(1);
+        capsule.rotation(r);
+        assertEquals(1, r[7], 1e-12, "the segment's local y lies along world z");
+        assertEquals(0.25, capsule.halfLength());
+        scene.simulation().step();
+        assertEquals(0.2 * Math.sin(2 * Math.PI * 0.5 * 0.02), capsule.centreX(), 1e-12, "on its oscillation after one step");
+    }
+
+    /** Bad colliders are named by field: no size, friction below 0, a thickness the cloth's spacing cannot hold. */
+    @Test
+    void badBoxesAndCapsulesAreNamed() {
+        assertProblem(BOX.replace("[0.3, 0.2, 0.1]", "[0.3, 0, 0.1]"), "colliders[0].halfExtents[1]", "must be in [0.001, 100] m");
+        assertProblem(CAPSULE.replace("\"radius\": 0.05", "\"radius\": -0.05"), "colliders[0].radius", "must be in [0.001, 100] m");
+        assertProblem(CAPSULE.replace("\"staticFriction\": 0.6", "\"staticFriction\": -0.1"), "colliders[0].staticFriction", "must be in [0, 10]");
+        assertProblem(CAPSULE.replace("[0, 0, 0.5]", "[0, 0, 0]"), "colliders[0].axis", "must not be (almost) zero");
+        assertProblem(BOX.replace("\"rotation\": [0, 90, 0], ", "\"radius\": 1, "), "colliders[0].radius", "unknown field");
+        // The 4 × 4 test cloth of 1 m has 0.333 m edges: a 0.2 m margin makes it 0.4 m thick.
+        assertProblem(BOX.replace("\"margin\": 0.005", "\"margin\": 0.2"), "colliders (box 0).margin", "makes the cloth 0.4000 m thick (twice the margin), more than its shortest edge 0.3333 m");
+    }
+
+    static void assertProblem(String collider, String field, String problemStart) {
+        PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse("bad.json", withColliders(collider)));
+        assertEquals(field, e.field(), e.getMessage());
+        assertTrue(e.problem().startsWith(problemStart) || e.problem().contains(problemStart), e.getMessage());
     }
 
     /** A near miss of a built-in name says which one, and lists them. */
