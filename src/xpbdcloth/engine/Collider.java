@@ -27,9 +27,9 @@ public abstract class Collider {
     /** The collide stage: adds to {@code contacts} every free particle this collider may touch this substep. */
     abstract void findContacts(Particles p, double h, ContactSet contacts);
 
-    /** One projection of the contact with particle i (nothing while it is outside). */
+    /** One projection of contact i (nothing while it is outside): particle i, or the entry i its findContacts gave. */
     abstract void project(Particles p, int i, double h);
 
-    /** C(x) of the contact with particle i: its distance outside the surface plus margin, m (negative inside). */
+    /** C(x) of contact i (as in {@link #project}): its distance outside the surface plus margin, m (negative inside). */
     abstract double clearance(Particles p, int i);
 }

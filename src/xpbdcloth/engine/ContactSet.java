@@ -16,7 +16,7 @@ import java.util.List;
  * substep). Order: sphere by sphere, particles ascending, the order the permanent contacts had, so
  * trajectories are unchanged bit for bit; then plane by plane, for particles within {@link #PLANE_SLACK}
  * of the surface (plus margin and their own motion); then box and capsule, for particles within reach of
- * the ball that holds the solid along its path over the substep.
+ * the ball that holds the solid along its path over the substep; last the cloth's pairs with itself.
  */
 final class ContactSet {
     /** Candidate distance beyond the surface, as a fraction of the sphere's radius. */
@@ -25,6 +25,8 @@ final class ContactSet {
     static final double PLANE_SLACK = 0.05;
 
     private int[] particle = new int[0];
+    /** What the collider knows the contact by: the particle, or (self-collision) its pair. */
+    private int[] entry = new int[0];
     private Collider[] with = new Collider[0];
     private int count;
 
@@ -34,20 +36,34 @@ final class ContactSet {
     /** Makes room for every particle against every collider (when colliders are added, never during a step). */
     void reserve(int particles, int colliders) {
         int n = particles * colliders;
-        if (particle.length < n) { particle = new int[n]; with = new Collider[n]; }
+        if (particle.length < n) { particle = new int[n]; entry = new int[n]; with = new Collider[n]; }
     }
 
     /** The collide stage: this substep's candidates (the spheres' first), from the predicted positions and placed colliders. */
-    void collide(Particles p, List<Sphere> spheres, List<Plane> planes, List<RigidCollider> solids, double h) {
+    void collide(Particles p, List<Sphere> spheres, List<Plane> planes, List<RigidCollider> solids, SelfCollision self, double h) {
         count = 0;
         for (int s = 0, ns = spheres.size(); s < ns; s++) spheres.get(s).findContacts(p, h, this);
         for (int s = 0, ns = planes.size(); s < ns; s++) planes.get(s).findContacts(p, h, this);
         for (int s = 0, ns = solids.size(); s < ns; s++) solids.get(s).findContacts(p, h, this);
+        if (self != null) self.findContacts(p, h, this);
     }
 
     /** A candidate: particle i against collider c. */
-    void add(int i, Collider c) {
+    void add(int i, Collider c) { add(i, i, c); }
+
+    /**
+     * A candidate of particle i that collider c knows by {@code e} (a self-collision pair). Pairs are not
+     * bounded by the particle count, so the arrays grow when a cloth needs more than ever before.
+     */
+    void add(int i, int e, Collider c) {
+        if (count == particle.length) {
+            int n = Math.max(16, 2 * count);
+            particle = java.util.Arrays.copyOf(particle, n);
+            entry = java.util.Arrays.copyOf(entry, n);
+            with = java.util.Arrays.copyOf(with, n);
+        }
         particle[count] = i;
+        entry[count] = e;
         with[count] = c;
         count++;
     }
@@ -55,7 +71,7 @@ final class ContactSet {
     /** Candidates touching their collider now (within 1 µm of the surface plus margin, or inside). */
     int touching(Particles p) {
         int n = 0;
-        for (int k = 0; k < count; k++) if (with[k].clearance(p, particle[k]) < TOUCHING) n++;
+        for (int k = 0; k < count; k++) if (with[k].clearance(p, entry[k]) < TOUCHING) n++;
         return n;
     }
 
@@ -64,11 +80,11 @@ final class ContactSet {
 
     /** One Gauss–Seidel pass over the contacts. */
     void project(Particles p, SolverContext ctx) {
-        for (int k = 0; k < count; k++) with[k].project(p, particle[k], ctx.h);
+        for (int k = 0; k < count; k++) with[k].project(p, entry[k], ctx.h);
     }
 
     /** Contact k alone (the probe's replay checks after each). */
     void project(Particles p, SolverContext ctx, int k) {
-        with[k].project(p, particle[k], ctx.h);
+        with[k].project(p, entry[k], ctx.h);
     }
 }

@@ -39,6 +39,8 @@ public final class Simulation {
     private final List<AttachmentConstraint> grabs = new ArrayList<>();
     private final List<Sphere> spheres = new ArrayList<>();
     private final List<RigidCollider> solids = new ArrayList<>();
+    /** The cloth's contacts with itself, or null. */
+    private SelfCollision self;
     private final List<Plane> planes = new ArrayList<>();
     private final ContactSet contacts = new ContactSet();
     private final List<Kinematics> kinematics = new ArrayList<>();
@@ -80,6 +82,9 @@ public final class Simulation {
     public List<Plane> planes() { return java.util.Collections.unmodifiableList(planes); }
     /** The boxes and capsules. */
     public List<RigidCollider> solids() { return java.util.Collections.unmodifiableList(solids); }
+
+    /** The cloth's self-collision, or null when it passes through itself. */
+    public SelfCollision selfCollision() { return self; }
 
     /** Spheres, planes, boxes and capsules together. */
     public int colliderCount() { return spheres.size() + planes.size() + solids.size(); }
@@ -189,6 +194,14 @@ public final class Simulation {
         if (plane == null) throw new IllegalArgumentException("plane must not be null, was null");
         planes.add(plane);
         contacts.reserve(particles.count(), colliderCount());
+        return this;
+    }
+
+    /** Makes the cloth keep a thickness from itself (replacing any earlier self-collision); null turns it off. */
+    public Simulation selfCollision(SelfCollision s) {
+        if (s != null && s.restParticles() != particles.count())
+            throw new IllegalArgumentException("self-collision was made for " + s.restParticles() + " particles, the simulation has " + particles.count());
+        self = s;
         return this;
     }
 
@@ -318,7 +331,7 @@ public final class Simulation {
             attachments.glide((s + 1) / (double) substeps);
             observer.after(Stage.KINEMATICS);
             long c0 = System.nanoTime();
-            contacts.collide(particles, spheres, planes, solids, h);
+            contacts.collide(particles, spheres, planes, solids, self, h);
             collideNanos += System.nanoTime() - c0;
             observer.after(Stage.COLLIDE);
             for (int b = 0, nb = body.size(); b < nb; b++) body.get(b).beginSubstep(ctx);

@@ -56,6 +56,8 @@ public final class Limits {
     public static final Range DAMPING = new Range(0, 100, "1/s");
     public static final Range SPHERE_RADIUS = new Range(1e-3, 100, "m");
     public static final Range MARGIN = new Range(0, 1, "m");
+    /** The cloth's thickness against itself. */
+    public static final Range THICKNESS = new Range(1e-4, 1, "m");
     /** Each component of a plane's normal (any length from 1e-3 up: it is normalised). */
     public static final Range NORMAL = new Range(-1, 1, "");
     /** μₛ and μₖ. */

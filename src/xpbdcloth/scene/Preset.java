@@ -28,12 +28,14 @@ public final class Preset {
     public final List<PlaneSpec> planes;
     /** Boxes and capsules. */
     public final List<SolidSpec> solids;
+    /** The cloth's contacts with itself, or null when it passes through itself. */
+    public final SelfCollisionSpec selfCollision;
     public final List<PinMotion> pinMotions;
     /** Null when the preset has no wind. */
     public final WindSpec wind;
 
     Preset(String source, String name, String description, Cloth cloth, Map<ConstraintFamily, Material> families, Solver solver,
-           List<SphereSpec> spheres, List<PlaneSpec> planes, List<SolidSpec> solids, List<PinMotion> pinMotions, WindSpec wind) {
+           List<SphereSpec> spheres, List<PlaneSpec> planes, List<SolidSpec> solids, SelfCollisionSpec selfCollision, List<PinMotion> pinMotions, WindSpec wind) {
         this.source = source;
         this.name = name;
         this.description = description;
@@ -43,6 +45,7 @@ public final class Preset {
         this.spheres = Collections.unmodifiableList(spheres);
         this.planes = Collections.unmodifiableList(planes);
         this.solids = Collections.unmodifiableList(solids);
+        this.selfCollision = selfCollision;
         this.pinMotions = Collections.unmodifiableList(pinMotions);
         this.wind = wind;
     }
@@ -142,6 +145,15 @@ public final class Preset {
         PlaneSpec(double[] point, double[] normal, double margin, double staticFriction, double kineticFriction) {
             this.point = point; this.normal = normal; this.margin = margin;
             this.staticFriction = staticFriction; this.kineticFriction = kineticFriction;
+        }
+    }
+
+    /** The cloth's thickness against itself (m) and the friction between its layers. */
+    public static final class SelfCollisionSpec {
+        public final double thickness, staticFriction, kineticFriction;
+
+        public SelfCollisionSpec(double thickness, double staticFriction, double kineticFriction) {
+            this.thickness = thickness; this.staticFriction = staticFriction; this.kineticFriction = kineticFriction;
         }
     }
 

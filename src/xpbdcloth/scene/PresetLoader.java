@@ -187,7 +187,7 @@ public final class PresetLoader {
         }
 
         Preset preset(Node root) {
-            object(root, Set.of("name", "description", "cloth", "families", "solver", "spheres", "colliders", "pinMotions", "wind"));
+            object(root, Set.of("name", "description", "cloth", "families", "solver", "spheres", "colliders", "selfCollision", "pinMotions", "wind"));
             String name = string(required(root, "name"));
             Node d = optional(root, "description");
             String description = d == null ? "" : string(d);
@@ -212,6 +212,8 @@ public final class PresetLoader {
             if (spheres.size() + planes.size() + solids.size() > Limits.MAX_SPHERES)
                 throw fail("colliders", "at most " + Limits.MAX_SPHERES + " colliders with the spheres, had " + (spheres.size() + planes.size() + solids.size()));
             checkThickness(cloth, spheres, planes, solids);
+            Node sc = optional(root, "selfCollision");
+            Preset.SelfCollisionSpec self = sc == null ? null : selfCollision(sc, cloth);
             List<Preset.PinMotion> motions = new ArrayList<>();
             Node ms = optional(root, "pinMotions");
             if (ms != null) for (Node m : array(ms, Limits.MAX_PIN_MOTIONS)) motions.add(pinMotion(m, cloth));
@@ -219,7 +221,7 @@ public final class PresetLoader {
             long particles = cloth.mesh != null ? cloth.mesh.vertexCount() : (long) cloth.columns * cloth.rows;
             String tooMuch = Limits.workProblem(particles, solver.iterations, solver.substeps, spheres.size() + planes.size() + solids.size(), solver.type != xpbdcloth.engine.SolverType.GAUSS_SEIDEL);
             if (tooMuch != null) throw fail("solver", tooMuch);
-            return new Preset(file, name, description, cloth, families, solver, spheres, planes, solids, motions, w == null ? null : wind(w));
+            return new Preset(file, name, description, cloth, families, solver, spheres, planes, solids, self, motions, w == null ? null : wind(w));
         }
 
         Preset.Cloth cloth(Node n) {
@@ -397,6 +399,18 @@ public final class PresetLoader {
             double[] normal = direction(required(n, "normal"));
             return new Preset.PlaneSpec(point, normal, margin(n), number(required(n, "staticFriction"), Limits.FRICTION),
                     number(required(n, "kineticFriction"), Limits.FRICTION));
+        }
+
+        /** The cloth's thickness against itself: no more than its shortest edge at rest. */
+        Preset.SelfCollisionSpec selfCollision(Node n, Preset.Cloth cloth) {
+            object(n, Set.of("thickness", "staticFriction", "kineticFriction"));
+            Node t = required(n, "thickness");
+            double thickness = number(t, Limits.THICKNESS);
+            double edge = cloth.shortestEdge();
+            if (thickness > edge)
+                throw fail(t.path, String.format(java.util.Locale.ROOT, "must be at most the cloth's shortest edge %.4g m, was %.4g m: thicker, neighbouring"
+                        + " particles that are not neighbours at rest would hold the cloth apart from itself in steps", edge, thickness));
+            return new Preset.SelfCollisionSpec(thickness, number(required(n, "staticFriction"), Limits.FRICTION), number(required(n, "kineticFriction"), Limits.FRICTION));
         }
 
         /** A direction: components in [-1, 1], not (almost) zero. */

@@ -12,6 +12,7 @@ import xpbdcloth.engine.SpherePath;
 import xpbdcloth.engine.Box;
 import xpbdcloth.engine.Capsule;
 import xpbdcloth.engine.RigidCollider;
+import xpbdcloth.engine.SelfCollision;
 import xpbdcloth.engine.Wind;
 
 /**
@@ -39,6 +40,7 @@ public final class Scene {
 
         for (Preset.PlaneSpec pl : preset.planes)
             simulation.add(new Plane(pl.point, pl.normal, pl.margin, pl.staticFriction, pl.kineticFriction));
+        if (preset.selfCollision != null) simulation.selfCollision(selfCollision(cloth, preset.selfCollision));
         for (Preset.SolidSpec sp : preset.solids) {
             RigidCollider solid = sp.type.equals("box")
                     ? new Box(path(sp.path), sp.halfExtents, sp.rotation, sp.margin, sp.staticFriction, sp.kineticFriction)
@@ -109,6 +111,11 @@ public final class Scene {
             // What only the engine can check (a mesh it cannot build, say) still names the file.
             throw new PresetException(preset.source, "(building the scene)", e.getMessage());
         }
+    }
+
+    /** The cloth's self-collision from its rest mesh. */
+    public static SelfCollision selfCollision(Cloth cloth, Preset.SelfCollisionSpec s) {
+        return new SelfCollision(cloth.mesh().positions(), s.thickness, s.staticFriction, s.kineticFriction);
     }
 
     /** A built-in scene by name. */

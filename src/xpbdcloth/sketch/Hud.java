@@ -79,7 +79,8 @@ final class Hud {
                 (s.sideBySide() ? "strain: under each cloth" : fmt("strain mean %.2f %%  max %.2f %%",
                         100 * Metrics.meanStrain(sim, ConstraintFamily.STRUCTURAL), 100 * Metrics.maxStrain(sim, ConstraintFamily.STRUCTURAL)))
                         + fmt("   KE %.2e J   max link force %.3f N%s", Metrics.kineticEnergy(sim.particles()), Metrics.maxForce(sim, ConstraintFamily.STRUCTURAL), s.sideBySide() ? " (PBD)" : ""),
-                s.windOn() ? fmt("wind %.1f m/s towards %.0f°", s.windSpeed(), Math.toDegrees(s.windAngle())) : "wind off",
+                (s.windOn() ? fmt("wind %.1f m/s towards %.0f°", s.windSpeed(), Math.toDegrees(s.windAngle())) : "wind off")
+                        + (sim.selfCollision() == null ? "   self-collision off" : fmt("   self-collision %.1f mm, %d pairs near", 1000 * sim.selfCollision().thickness(), sim.selfCollision().pairCount())),
                 s.showHelp ? "h: hide the keys" : "h: keys   q: quit",
         };
         return lines;

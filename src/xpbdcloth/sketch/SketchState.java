@@ -78,6 +78,7 @@ public final class SketchState {
         materials.clear();
         p.families.forEach((f, m) -> materials.put(f, new double[] {m.stiffness, m.compliance}));
         windOn = p.wind != null;
+        selfCollisionOn = p.selfCollision != null;
         double[] u = p.wind == null ? new double[] {2, 0, 1.5} : p.wind.velocity;
         windAngle = Math.atan2(u[2], u[0]);
         windSpeed = Math.hypot(u[0], u[2]);
@@ -108,6 +109,8 @@ public final class SketchState {
                 s.simulation().setCompliance(f, km[1]);
             });
             s.setWind(windOn);
+            boolean has = s.simulation().selfCollision() != null;
+            if (selfCollisionOn != has) s.simulation().selfCollision(selfCollisionOn ? Scene.selfCollision(s.cloth(), selfCollisionSpec()) : null);
             s.wind().setVelocity(windSpeed * Math.cos(windAngle), 0, windSpeed * Math.sin(windAngle));
         }
     }
@@ -291,6 +294,22 @@ public final class SketchState {
     }
 
     public void togglePause() { paused = !paused; }
+
+    private boolean selfCollisionOn;
+
+    public boolean selfCollisionOn() { return selfCollisionOn; }
+
+    /** The cloth keeps its thickness from itself, or passes through itself (no reset). */
+    public void toggleSelfCollision() {
+        selfCollisionOn = !selfCollisionOn;
+        applyAll();
+        say(selfCollisionOn ? String.format(java.util.Locale.ROOT, "self-collision on: thickness %.1f mm", 1000 * selfCollisionSpec().thickness) : "self-collision off");
+    }
+
+    /** The preset's self-collision, or half the cloth's shortest edge with layers' friction 0.3 / 0.2. */
+    Preset.SelfCollisionSpec selfCollisionSpec() {
+        return preset.selfCollision != null ? preset.selfCollision : new Preset.SelfCollisionSpec(0.5 * preset.cloth.shortestEdge(), 0.3, 0.2);
+    }
 
     public boolean paused() { return paused; }
 

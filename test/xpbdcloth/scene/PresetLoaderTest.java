@@ -111,6 +111,17 @@ class PresetLoaderTest {
         assertProblem(BOX.replace("\"margin\": 0.005", "\"margin\": 0.2"), "colliders (box 0).margin", "makes the cloth 0.4000 m thick (twice the margin), more than its shortest edge 0.3333 m");
     }
 
+    /** Self-collision loads into the scene; a thickness above the cloth's spacing is named with both numbers. */
+    @Test
+    void selfCollisionLoadsAndATooThickClothIsNamed() {
+        String text = valid().replace(" \"solver\":", " \"selfCollision\": { \"thickness\": 0.2, \"staticFriction\": 0.3, \"kineticFriction\": 0.2 }, \"solver\":");
+        Scene scene = Scene.of(PresetLoader.parse("self.json", text));
+        assertEquals(0.2, scene.simulation().selfCollision().thickness());
+        PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse("thick.json", text.replace("\"thickness\": 0.2", "\"thickness\": 0.5")));
+        assertEquals("selfCollision.thickness", e.field(), e.getMessage());
+        assertTrue(e.problem().startsWith("must be at most the cloth's shortest edge 0.3333 m, was 0.5000 m"), e.getMessage());
+    }
+
     static void assertProblem(String collider, String field, String problemStart) {
         PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse("bad.json", withColliders(collider)));
         assertEquals(field, e.field(), e.getMessage());
