@@ -52,7 +52,8 @@ public final class KeyBindings {
         b.add(new KeyBinding('a', "compliance alpha x sqrt(10) (XPBD, softer)", s -> s.changeCompliance(1), KeyBindings::material));
         b.add(new KeyBinding('A', "compliance alpha / sqrt(10) (XPBD, stiffer)", s -> s.changeCompliance(-1), KeyBindings::material));
         b.add(new KeyBinding('b', "side by side: PBD left, XPBD right", SketchState::toggleSideBySide, SketchState::sideBySide));
-        for (int i = 0; i < xpbdcloth.scene.PresetLoader.BUILT_IN.size(); i++) {
+        // Ten scenes have keys; the others load with --scene or 'l'.
+        for (int i = 0; i < Math.min(10, xpbdcloth.scene.PresetLoader.BUILT_IN.size()); i++) {
             final int scene = i;
             b.add(new KeyBinding(sceneKey(i), "scene: " + xpbdcloth.scene.PresetLoader.BUILT_IN.get(i),
                     s -> s.selectScene(scene), s -> s.preset().name));

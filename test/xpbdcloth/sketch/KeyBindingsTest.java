@@ -45,9 +45,9 @@ class KeyBindingsTest {
             if (Character.isDigit(b.key)) continue; // listed as one row, 1–N
             assertTrue(readme.contains("| `" + key + "` | " + b.help + " |"), "README lists key " + key);
         }
-        int scenes = xpbdcloth.scene.PresetLoader.BUILT_IN.size();
-        String keys = scenes <= 9 ? "`1`–`" + scenes + "`" : "`1`–`9`, `0`";
-        assertTrue(readme.contains("| " + keys + " | scenes: " + String.join(", ", xpbdcloth.scene.PresetLoader.BUILT_IN) + " |"), "README's scene keys row");
+        java.util.List<String> keyed = xpbdcloth.scene.PresetLoader.BUILT_IN.subList(0, Math.min(10, xpbdcloth.scene.PresetLoader.BUILT_IN.size()));
+        String keys = keyed.size() <= 9 ? "`1`–`" + keyed.size() + "`" : "`1`–`9`, `0`";
+        assertTrue(readme.contains("| " + keys + " | scenes: " + String.join(", ", keyed) + " |"), "README's scene keys row");
     }
 
     @Test

@@ -44,7 +44,7 @@ public class RecordingSmokeTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth"})
+    @ValueSource(strings = {"hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth", "table", "arm", "drop-fold"})
     void sceneRendersAndMoves(String scene, @org.junit.jupiter.api.io.TempDir Path out) throws Exception {
         String log = record(out, scene);
         File first = out.resolve("frame-0001.png").toFile(), last = out.resolve(String.format("frame-%04d.png", FRAMES)).toFile();

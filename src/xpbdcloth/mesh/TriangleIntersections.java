@@ -1,0 +1,123 @@
+package xpbdcloth.mesh;
+
+import java.util.Arrays;
+
+/**
+ * How many pairs of triangles of a mesh pass through each other, over pairs that share no vertex: the
+ * measure of a cloth that has gone through itself (0 for a cloth whose self-collision held).
+ *
+ * <p>Two triangles that are not coplanar intersect exactly when an edge of one crosses the other; each
+ * edge is tested against the other triangle with the segment–triangle test of Möller and Trumbore (1997,
+ * "Fast, Minimum Storage Ray/Triangle Intersection"), on the segment's parameter range [0, 1]. Coplanar
+ * overlaps (a set of measure zero for a moving cloth) are not counted. Candidate pairs come from a uniform
+ * grid over the triangles' bounding boxes (cell: twice the mean edge), so a frame of a 48² cloth costs
+ * milliseconds, not the 10⁷ pairs of a brute-force count.
+ */
+public final class TriangleIntersections {
+    private TriangleIntersections() {}
+
+    /** Pairs of vertex-disjoint triangles of {@code t} (3 indices each) over positions {@code x} that intersect. */
+    public static int count(double[] x, int[] t) {
+        int n = t.length / 3;
+        if (n < 2) return 0;
+        double mean = 0;
+        for (int k = 0; k < t.length; k++) {
+            int a = 3 * t[k], b = 3 * t[k % 3 == 2 ? k - 2 : k + 1];
+            mean += Math.sqrt(sq(x[a] - x[b]) + sq(x[a + 1] - x[b + 1]) + sq(x[a + 2] - x[b + 2]));
+        }
+        double cell = Math.max(2 * mean / t.length, 1e-9);
+        // Each triangle listed in every cell its bounding box touches (hashed), by counting sort.
+        int[][] boxes = new int[n][6];
+        int entries = 0;
+        for (int i = 0; i < n; i++) {
+            int[] bx = boxes[i];
+            for (int d = 0; d < 3; d++) {
+                double lo = Math.min(x[3 * t[3 * i] + d], Math.min(x[3 * t[3 * i + 1] + d], x[3 * t[3 * i + 2] + d]));
+                double hi = Math.max(x[3 * t[3 * i] + d], Math.max(x[3 * t[3 * i + 1] + d], x[3 * t[3 * i + 2] + d]));
+                bx[d] = (int) Math.floor(lo / cell);
+                bx[d + 3] = (int) Math.floor(hi / cell);
+            }
+            entries += (bx[3] - bx[0] + 1) * (bx[4] - bx[1] + 1) * (bx[5] - bx[2] + 1);
+        }
+        int table = 2 * entries + 1;
+        int[] start = new int[table + 1], list = new int[entries];
+        for (int pass = 0; pass < 2; pass++) {
+            for (int i = 0; i < n; i++) {
+                int[] bx = boxes[i];
+                for (int cx = bx[0]; cx <= bx[3]; cx++)
+                    for (int cy = bx[1]; cy <= bx[4]; cy++)
+                        for (int cz = bx[2]; cz <= bx[5]; cz++) {
+                            int h = hash(cx, cy, cz, table);
+                            if (pass == 0) start[h]++;
+                            else list[--start[h]] = i;
+                        }
+            }
+            if (pass == 0) for (int c = 0, sum = 0; c <= table; c++) { sum += start[c]; start[c] = sum; }
+        }
+        int[] seen = new int[n];
+        Arrays.fill(seen, -1);
+        int found = 0;
+        for (int i = 0; i < n; i++) {
+            int[] bx = boxes[i];
+            for (int cx = bx[0]; cx <= bx[3]; cx++)
+                for (int cy = bx[1]; cy <= bx[4]; cy++)
+                    for (int cz = bx[2]; cz <= bx[5]; cz++) {
+                        int h = hash(cx, cy, cz, table);
+                        for (int s = start[h]; s < start[h + 1]; s++) {
+                            int j = list[s];
+                            if (j <= i || seen[j] == i) continue;
+                            seen[j] = i;
+                            if (!overlap(boxes[i], boxes[j]) || shareVertex(t, i, j)) continue;
+                            if (intersect(x, t, i, j)) found++;
+                        }
+                    }
+        }
+        return found;
+    }
+
+    private static boolean overlap(int[] a, int[] b) {
+        for (int d = 0; d < 3; d++) if (a[d + 3] < b[d] || b[d + 3] < a[d]) return false;
+        return true;
+    }
+
+    private static boolean shareVertex(int[] t, int i, int j) {
+        for (int a = 0; a < 3; a++) for (int b = 0; b < 3; b++) if (t[3 * i + a] == t[3 * j + b]) return true;
+        return false;
+    }
+
+    /** Whether triangles i and j cross: an edge of either passes through the other. */
+    static boolean intersect(double[] x, int[] t, int i, int j) {
+        for (int e = 0; e < 3; e++) {
+            if (segmentCrosses(x, t[3 * i + e], t[3 * i + (e + 1) % 3], t, j)) return true;
+            if (segmentCrosses(x, t[3 * j + e], t[3 * j + (e + 1) % 3], t, i)) return true;
+        }
+        return false;
+    }
+
+    /** Möller–Trumbore: does segment p→q cross triangle k (its interior or boundary)? */
+    private static boolean segmentCrosses(double[] x, int p, int q, int[] t, int k) {
+        int a = 3 * t[3 * k], b = 3 * t[3 * k + 1], c = 3 * t[3 * k + 2];
+        double dx = x[3 * q] - x[3 * p], dy = x[3 * q + 1] - x[3 * p + 1], dz = x[3 * q + 2] - x[3 * p + 2];
+        double e1x = x[b] - x[a], e1y = x[b + 1] - x[a + 1], e1z = x[b + 2] - x[a + 2];
+        double e2x = x[c] - x[a], e2y = x[c + 1] - x[a + 1], e2z = x[c + 2] - x[a + 2];
+        double px = dy * e2z - dz * e2y, py = dz * e2x - dx * e2z, pz = dx * e2y - dy * e2x;
+        double det = e1x * px + e1y * py + e1z * pz;
+        double scale = Math.sqrt(dx * dx + dy * dy + dz * dz) * Math.sqrt(e1x * e1x + e1y * e1y + e1z * e1z) * Math.sqrt(e2x * e2x + e2y * e2y + e2z * e2z);
+        if (Math.abs(det) <= 1e-12 * scale) return false; // parallel to the plane: coplanar cases not counted
+        double inv = 1 / det;
+        double sx = x[3 * p] - x[a], sy = x[3 * p + 1] - x[a + 1], sz = x[3 * p + 2] - x[a + 2];
+        double u = (sx * px + sy * py + sz * pz) * inv;
+        if (u < 0 || u > 1) return false;
+        double qx = sy * e1z - sz * e1y, qy = sz * e1x - sx * e1z, qz = sx * e1y - sy * e1x;
+        double v = (dx * qx + dy * qy + dz * qz) * inv;
+        if (v < 0 || u + v > 1) return false;
+        double s = (e2x * qx + e2y * qy + e2z * qz) * inv;
+        return s >= 0 && s <= 1;
+    }
+
+    private static int hash(int x, int y, int z, int table) {
+        return Math.floorMod((x * 92837111) ^ (y * 689287499) ^ (z * 283923481), table);
+    }
+
+    private static double sq(double v) { return v * v; }
+}
