@@ -4,7 +4,7 @@ import static org.junit.jupiter.api.Assertions.*;
 
 import org.junit.jupiter.api.Test;
 
-/** Cloth on a fixed plane: Coulomb's law on a slope, and rest without jitter on a floor. */
+/** Cloth on a fixed plane (and on the top of a tilted box): Coulomb's law on a slope, and rest without jitter on a floor. */
 class PlaneContactTest {
     static final double MARGIN = 0.005;
 
@@ -13,6 +13,11 @@ class PlaneContactTest {
      * returned value is its centroid's travel down the slope after {@code seconds}.
      */
     static double slideDownSlope(double theta, double staticFriction, double kineticFriction, double seconds) {
+        return slideDownSlope(theta, staticFriction, kineticFriction, seconds, false);
+    }
+
+    /** The same on the top face of a box 10 m wide and 20 cm thick, turned by θ, when {@code onBox}. */
+    static double slideDownSlope(double theta, double staticFriction, double kineticFriction, double seconds, boolean onBox) {
         Cloth c = new ClothBuilder().resolution(4, 4).size(0.15, 0.15).plane(ClothBuilder.Plane.HORIZONTAL).origin(0, 0, 0).arealDensity(0.2)
                 .family(ConstraintFamily.STRUCTURAL, 1, 1e-6).family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2).build();
         Particles p = c.particles();
@@ -23,7 +28,9 @@ class PlaneContactTest {
             p.setPosition(i, u * tx + MARGIN * nx, u * ty + MARGIN * ny, v);
         }
         Simulation sim = c.simulation(new SolverSettings().iterations(2).substeps(10).timestep(0.02));
-        sim.add(new Plane(new double[] {0, 0, 0}, new double[] {nx, ny, 0}, MARGIN, staticFriction, kineticFriction));
+        if (onBox) // top face through the origin: centre half a thickness below it along −n; local +y turned onto n
+            sim.add(new Box(SpherePath.fixed(-0.1 * nx, -0.1 * ny, 0), new double[] {5, 0.1, 5}, new double[] {0, 0, -Math.toDegrees(theta)}, MARGIN, staticFriction, kineticFriction));
+        else sim.add(new Plane(new double[] {0, 0, 0}, new double[] {nx, ny, 0}, MARGIN, staticFriction, kineticFriction));
         double start = centroidAlong(p, tx, ty);
         int steps = (int) Math.round(seconds / 0.02);
         for (int s = 0; s < steps; s++) sim.step();
@@ -58,6 +65,17 @@ class PlaneContactTest {
         // Frictionless, for contrast: g sin θ.
         double free = slideDownSlope(theta, 0, 0, 1.0);
         assertEquals(9.81 * Math.sin(theta) / 2, free, 0.02 * 9.81 * Math.sin(theta) / 2);
+    }
+
+    /** Coulomb's law on both sides of the threshold holds on a tilted box's face as on the plane (shared friction, the box's own contact). */
+    @Test
+    void onATiltedBoxTheClothObeysCoulombToo() {
+        double stays = slideDownSlope(Math.atan(0.4), 0.5, 0.3, 2.0, true);
+        double theta = Math.atan(0.7), a = 9.81 * (Math.sin(theta) - 0.3 * Math.cos(theta));
+        double slides = slideDownSlope(theta, 0.5, 0.3, 1.0, true);
+        System.out.printf("tilted box: tan θ = 0.4 < μs moved %.2e m in 2 s; tan θ = 0.7 slid %.4f m in 1 s, Coulomb %.4f m%n", stays, slides, a / 2);
+        assertEquals(0, stays, 1e-3);
+        assertEquals(a / 2, slides, 0.02 * a / 2);
     }
 
     /**
