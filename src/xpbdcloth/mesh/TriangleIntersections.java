@@ -40,39 +40,35 @@ public final class TriangleIntersections {
             entries += (bx[3] - bx[0] + 1) * (bx[4] - bx[1] + 1) * (bx[5] - bx[2] + 1);
         }
         int table = 2 * entries + 1;
+        int[][] cells = new int[n][];
+        for (int i = 0; i < n; i++) cells[i] = hashedCells(boxes[i], table);
         int[] start = new int[table + 1], list = new int[entries];
-        for (int pass = 0; pass < 2; pass++) {
-            for (int i = 0; i < n; i++) {
-                int[] bx = boxes[i];
-                for (int cx = bx[0]; cx <= bx[3]; cx++)
-                    for (int cy = bx[1]; cy <= bx[4]; cy++)
-                        for (int cz = bx[2]; cz <= bx[5]; cz++) {
-                            int h = hash(cx, cy, cz, table);
-                            if (pass == 0) start[h]++;
-                            else list[--start[h]] = i;
-                        }
-            }
-            if (pass == 0) for (int c = 0, sum = 0; c <= table; c++) { sum += start[c]; start[c] = sum; }
-        }
+        for (int i = 0; i < n; i++) for (int h : cells[i]) start[h]++;
+        for (int c = 0, sum = 0; c <= table; c++) { sum += start[c]; start[c] = sum; }
+        for (int i = 0; i < n; i++) for (int h : cells[i]) list[--start[h]] = i;
         int[] seen = new int[n];
         Arrays.fill(seen, -1);
         int found = 0;
-        for (int i = 0; i < n; i++) {
-            int[] bx = boxes[i];
-            for (int cx = bx[0]; cx <= bx[3]; cx++)
-                for (int cy = bx[1]; cy <= bx[4]; cy++)
-                    for (int cz = bx[2]; cz <= bx[5]; cz++) {
-                        int h = hash(cx, cy, cz, table);
-                        for (int s = start[h]; s < start[h + 1]; s++) {
-                            int j = list[s];
-                            if (j <= i || seen[j] == i) continue;
-                            seen[j] = i;
-                            if (!overlap(boxes[i], boxes[j]) || shareVertex(t, i, j)) continue;
-                            if (intersect(x, t, i, j)) found++;
-                        }
-                    }
-        }
+        for (int i = 0; i < n; i++)
+            for (int h : cells[i])
+                for (int s = start[h]; s < start[h + 1]; s++) {
+                    int j = list[s];
+                    if (j <= i || seen[j] == i) continue;
+                    seen[j] = i;
+                    if (!overlap(boxes[i], boxes[j]) || shareVertex(t, i, j)) continue;
+                    if (intersect(x, t, i, j)) found++;
+                }
         return found;
+    }
+
+    /** The hashed cells a bounding box {min x, y, z, max x, y, z} (in cells) touches. */
+    private static int[] hashedCells(int[] box, int table) {
+        int[] out = new int[(box[3] - box[0] + 1) * (box[4] - box[1] + 1) * (box[5] - box[2] + 1)];
+        int k = 0;
+        for (int cx = box[0]; cx <= box[3]; cx++)
+            for (int cy = box[1]; cy <= box[4]; cy++)
+                for (int cz = box[2]; cz <= box[5]; cz++) out[k++] = hash(cx, cy, cz, table);
+        return out;
     }
 
     private static boolean overlap(int[] a, int[] b) {
