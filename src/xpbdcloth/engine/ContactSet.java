@@ -80,8 +80,19 @@ final class ContactSet {
 
     /** One Gauss–Seidel pass over the contacts. */
     void project(Particles p, SolverContext ctx) {
+        long t0 = System.nanoTime();
         for (int k = 0; k < count; k++) with[k].project(p, entry[k], ctx.h);
+        projectNanos += System.nanoTime() - t0;
     }
+
+    /** Wall time spent in {@link #project(Particles, SolverContext)} since the counter was last read. */
+    long takeProjectNanos() {
+        long t = projectNanos;
+        projectNanos = 0;
+        return t;
+    }
+
+    private long projectNanos;
 
     /** Contact k alone (the probe's replay checks after each). */
     void project(Particles p, SolverContext ctx, int k) {

@@ -322,6 +322,8 @@ public final class Simulation {
         for (int f = 0, nf = forces.size(); f < nf; f++) forces.get(f).apply(particles, time, dt);
         observer.after(Stage.FORCES);
         collideNanos = 0;
+        solveNanos = 0;
+        contacts.takeProjectNanos();
         ctx.load(settings, h);
         for (int s = 0; s < substeps; s++) {
             final double t = time + h;
@@ -337,7 +339,9 @@ public final class Simulation {
             for (int b = 0, nb = body.size(); b < nb; b++) body.get(b).beginSubstep(ctx);
             attachments.beginSubstep(ctx);
             sweepListener.afterSweep(this, s, -1);
+            long s0 = System.nanoTime();
             solveStage.solve(s, iterations);
+            solveNanos += System.nanoTime() - s0;
             observer.after(Stage.SOLVE);
             updateVelocities(h);
             observer.after(Stage.UPDATE_VELOCITIES);
@@ -346,6 +350,7 @@ public final class Simulation {
             time = t;
         }
         attachments.arrive();
+        projectContactNanos = contacts.takeProjectNanos();
         java.util.Arrays.fill(particles.force, 0);
         stepCount++;
     }
@@ -507,7 +512,17 @@ public final class Simulation {
     /** Wall time of the last step's collide stages (finding the contacts, all substeps), ms. */
     public double collideMs() { return collideNanos / 1e6; }
 
-    private long collideNanos;
+    /**
+     * Wall time the last step spent on contacts, ms: finding them (hash, self-collision pairs, colliders)
+     * and projecting them in every sweep. Projection is timed per sweep, not per contact, so the clock
+     * costs two reads a sweep.
+     */
+    public double contactMs() { return (collideNanos + projectContactNanos) / 1e6; }
+
+    /** Wall time of the last step's solve stages minus the contacts projected in them: the cloth's own constraints, ms. */
+    public double constraintSolveMs() { return (solveNanos - projectContactNanos) / 1e6; }
+
+    private long collideNanos, solveNanos, projectContactNanos;
 
     /** The substep h of the step in progress (or of the last step), seconds. */
     public double substep() { return ctx.h; }

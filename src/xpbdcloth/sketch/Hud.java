@@ -75,7 +75,7 @@ final class Hud {
                         : fmt("sim %.2f ms/step   render %.2f ms   %.0f fps   %.1f kB allocated/frame%s", simMs, renderMs, fps, bytesPerFrame / 1024,
                         slowMotion ? "   SLOW MOTION" : ""),
                 fmt("particles %d   constraints %d   contacts %d touching of %d%s", sim.particles().count() * running.size(), constraints,
-                        sim.touchingContacts(), sim.contactCount(), recording ? "" : fmt(" (found in %.2f ms)", sim.collideMs())),
+                        sim.touchingContacts(), sim.contactCount(), recording ? "" : fmt("   contacts %.2f ms, constraints %.2f ms", sim.contactMs(), sim.constraintSolveMs())),
                 (s.sideBySide() ? "strain: under each cloth" : fmt("strain mean %.2f %%  max %.2f %%",
                         100 * Metrics.meanStrain(sim, ConstraintFamily.STRUCTURAL), 100 * Metrics.maxStrain(sim, ConstraintFamily.STRUCTURAL)))
                         + fmt("   KE %.2e J   max link force %.3f N%s", Metrics.kineticEnergy(sim.particles()), Metrics.maxForce(sim, ConstraintFamily.STRUCTURAL), s.sideBySide() ? " (PBD)" : ""),

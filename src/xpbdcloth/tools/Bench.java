@@ -26,7 +26,7 @@ import xpbdcloth.engine.SpherePath;
  * <p>{@code --full} prints the same columns after a first column {@code case}: the row-major order, the
  * Ten Minute Physics workload (15 substeps × 1 iteration, stretch + bending distance constraints), all
  * families with a sphere, N = 256, and the coloured solve on 1 and 2 threads; memory per particle and
- * per constraint goes to stderr.
+ * per constraint goes to stderr. Then the contact cases of {@link ContactBench}, under their own header.
  *
  * <p>Timing is a warmed-up loop: at least 2 s of warm-up, then at least 3 s measured; allocation is
  * measured over the same steady-state steps with the JVM's per-thread allocation counter (helper
@@ -53,6 +53,7 @@ public final class Bench {
         for (int t : new int[] {1, 2}) System.out.println("parallel-" + t + "-threads," + row(grid(128, ConstraintOrder.COLOURED, t)));
         for (int t : new int[] {1, 2}) System.out.println("parallel-" + t + "-threads," + row(grid(256, ConstraintOrder.COLOURED, t)));
         memory();
+        ContactBench.run();
     }
 
     static Simulation grid(int n, ConstraintOrder order, int threads) {

@@ -14,14 +14,16 @@ class SelfCollisionTest {
      * so that it collapses onto itself in layers (2 s). Every 5 steps, the closest approach of particles that
      * were more than two spacings apart at rest. Returns it as a fraction of the thickness.
      */
-    static double closestNonNeighbours(boolean selfCollision) {
+    static double closestNonNeighbours(boolean selfCollision) { return closestNonNeighbours(selfCollision, 1); }
+
+    static double closestNonNeighbours(boolean selfCollision, int rebuildEvery) {
         Cloth c = new ClothBuilder().resolution(N, N).size(1, 1).origin(0, 1.02, 0).arealDensity(0.2)
                 .family(ConstraintFamily.STRUCTURAL, 1, 1e-6).family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2).build();
         Simulation sim = c.simulation(new SolverSettings().iterations(2).substeps(10));
         sim.add(Plane.floor(0, 0.005, 0.6, 0.45));
         Particles p = c.particles();
         double[] rest = p.positions().clone();
-        if (selfCollision) sim.selfCollision(new SelfCollision(rest, THICKNESS, 0.3, 0.2));
+        if (selfCollision) sim.selfCollision(new SelfCollision(rest, THICKNESS, 0.3, 0.2).rebuildEvery(rebuildEvery));
         for (int i = 0; i < p.count(); i++) p.setVelocity(i, 0, 0, 0.3 * Math.sin(3 * p.y(i)));
         double closest = Double.POSITIVE_INFINITY;
         for (int step = 1; step <= 100; step++) {
@@ -45,6 +47,19 @@ class SelfCollisionTest {
         System.out.printf("cloth collapsing onto itself: closest non-neighbours %.2f t without self-collision, %.2f t with%n", off, on);
         assertTrue(off < 0.5, "without self-collision the layers pass through each other: " + off + " t");
         assertTrue(on > 0.95, "with it they keep the thickness: " + on + " t");
+    }
+
+    /**
+     * The hash rebuilt every 5 of the 10 substeps: the pairs found then reach as far as each particle's
+     * motion carries it over 5 substeps, and the layers still keep their thickness.
+     */
+    @Test
+    void aHashRebuiltEveryFewSubstepsStillKeepsTheThickness() {
+        double every5 = closestNonNeighbours(true, 5);
+        System.out.printf("cloth collapsing onto itself, hash every 5 substeps: closest non-neighbours %.2f t%n", every5);
+        assertTrue(every5 > 0.95, "closest non-neighbours " + every5 + " t");
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new SelfCollision(new double[6], 0.01, 0.3, 0.2).rebuildEvery(0));
+        assertTrue(e.getMessage().startsWith("rebuildEvery must be in [1, 100] substeps, was 0"), e.getMessage());
     }
 
     /** Two free particles meeting head on: pushed apart to the thickness, total momentum unchanged. */
