@@ -8,6 +8,12 @@ public enum ConstraintFamily {
     SHEAR,
     /** Triangle bending constraints over three consecutive particles (Kelager et al. 2010). */
     BEND,
+    /** Orthotropic membrane energy per triangle, from a fabric's moduli ({@link MembraneBlock}). */
+    MEMBRANE,
+    /** Dihedral angle bending on interior edges, from a bending stiffness ({@link DihedralBlock}). */
+    DIHEDRAL,
+    /** Long-range attachments to the nearest pin ({@link TetherBlock}). */
+    TETHER,
     /** Sphere contacts: always hard (k = 1, α = 0). */
     COLLISION,
     /** A particle held at a target point, e.g. by the mouse. */

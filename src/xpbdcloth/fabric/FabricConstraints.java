@@ -1,0 +1,107 @@
+package xpbdcloth.fabric;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.PriorityQueue;
+import xpbdcloth.engine.ConstraintBlock;
+import xpbdcloth.engine.ConstraintFamily;
+import xpbdcloth.engine.DihedralBlock;
+import xpbdcloth.engine.MembraneBlock;
+import xpbdcloth.engine.OrthotropicMaterial;
+import xpbdcloth.engine.Particles;
+import xpbdcloth.engine.TetherBlock;
+
+/**
+ * A cloth as a material rather than as springs: from a triangle mesh at rest, the membrane of every
+ * triangle ({@link MembraneBlock}, warp along a given in-plane direction), a dihedral bend on every
+ * interior edge ({@link DihedralBlock}) and, if asked, a tether from every free particle to its nearest
+ * pinned one along the mesh ({@link TetherBlock}). The blocks' constants come from the material's
+ * moduli and the mesh's rest shape, so the same fabric on a finer mesh is the same cloth.
+ */
+public final class FabricConstraints {
+    private FabricConstraints() {}
+
+    /**
+     * @param p         the cloth's particles at rest (pinned ones have inverse mass 0)
+     * @param triangles three particle indices per triangle
+     * @param warp      the warp direction (x, y, z), projected into each triangle's plane
+     * @param membrane  in-plane elasticity
+     * @param bendingStiffness B, N·m (per unit width)
+     * @param tethers   whether to tether free particles to their nearest pin
+     * @return the membrane, dihedral and (if asked and anything is pinned) tether blocks, in that order
+     */
+    public static List<ConstraintBlock> build(Particles p, int[] triangles, double[] warp, OrthotropicMaterial membrane,
+                                              double bendingStiffness, boolean tethers) {
+        if (triangles == null || triangles.length == 0 || triangles.length % 3 != 0)
+            throw new IllegalArgumentException("triangles must hold three indices per triangle, had " + (triangles == null ? "null" : triangles.length));
+        if (warp == null || warp.length != 3) throw new IllegalArgumentException("warp must be a direction (x, y, z), was " + Arrays.toString(warp));
+        MembraneBlock m = new MembraneBlock(ConstraintFamily.MEMBRANE, triangles.length / 3);
+        for (int t = 0; t < triangles.length; t += 3)
+            m.addTriangle(p, triangles[t], triangles[t + 1], triangles[t + 2], warp[0], warp[1], warp[2], membrane);
+        List<ConstraintBlock> blocks = new ArrayList<>(List.of(m, dihedrals(p, triangles, bendingStiffness)));
+        if (tethers) {
+            TetherBlock t = tethers(p, triangles);
+            if (t.count() > 0) blocks.add(t);
+        }
+        return blocks;
+    }
+
+    /** A bend on every edge two triangles share (an edge of more than two triangles bends between the first two). */
+    static DihedralBlock dihedrals(Particles p, int[] triangles, double bendingStiffness) {
+        DihedralBlock d = new DihedralBlock(ConstraintFamily.DIHEDRAL, triangles.length / 2);
+        Map<Long, Integer> firstOpposite = new HashMap<>();
+        long n = p.count();
+        for (int t = 0; t < triangles.length; t += 3)
+            for (int e = 0; e < 3; e++) {
+                int a = triangles[t + e], b = triangles[t + (e + 1) % 3], opposite = triangles[t + (e + 2) % 3];
+                long key = Math.min(a, b) * n + Math.max(a, b);
+                Integer other = firstOpposite.putIfAbsent(key, opposite);
+                // The edge as the first triangle walked it (a→b): the order fixes the angle's sign convention.
+                if (other != null && other >= 0) {
+                    d.addAtCurrentShape(p, other, opposite, b, a, bendingStiffness);
+                    firstOpposite.put(key, -1);
+                }
+            }
+        return d;
+    }
+
+    /** Each free particle tethered to its nearest pin along the rest mesh's edges (Dijkstra from all pins). */
+    static TetherBlock tethers(Particles p, int[] triangles) {
+        int n = p.count();
+        List<List<int[]>> neighbours = new ArrayList<>();
+        for (int i = 0; i < n; i++) neighbours.add(new ArrayList<>());
+        for (int t = 0; t < triangles.length; t += 3)
+            for (int e = 0; e < 3; e++) {
+                int a = triangles[t + e], b = triangles[t + (e + 1) % 3];
+                neighbours.get(a).add(new int[] {b});
+                neighbours.get(b).add(new int[] {a});
+            }
+        double[] distance = new double[n];
+        int[] anchor = new int[n];
+        Arrays.fill(distance, Double.POSITIVE_INFINITY);
+        Arrays.fill(anchor, -1);
+        PriorityQueue<double[]> queue = new PriorityQueue<>((u, v) -> Double.compare(u[0], v[0]));
+        for (int i = 0; i < n; i++)
+            if (p.inverseMass(i) == 0) { distance[i] = 0; anchor[i] = i; queue.add(new double[] {0, i}); }
+        while (!queue.isEmpty()) {
+            double[] top = queue.poll();
+            int i = (int) top[1];
+            if (top[0] > distance[i]) continue;
+            for (int[] j : neighbours.get(i)) {
+                double d = distance[i] + dist(p, i, j[0]);
+                if (d < distance[j[0]]) { distance[j[0]] = d; anchor[j[0]] = anchor[i]; queue.add(new double[] {d, j[0]}); }
+            }
+        }
+        TetherBlock block = new TetherBlock(ConstraintFamily.TETHER, n);
+        for (int i = 0; i < n; i++) if (p.inverseMass(i) > 0 && anchor[i] >= 0) block.add(anchor[i], i, distance[i]);
+        return block;
+    }
+
+    private static double dist(Particles p, int a, int b) {
+        double dx = p.x(a) - p.x(b), dy = p.y(a) - p.y(b), dz = p.z(a) - p.z(b);
+        return Math.sqrt(dx * dx + dy * dy + dz * dz);
+    }
+}
