@@ -25,6 +25,7 @@ public final class Experiments implements Callable<Integer> {
         e.add(new GaussSeidelConvergence());
         e.add(new SubstepsVsIterations());
         e.add(new GlobalSolverComparison());
+        e.add(new MeshIndependence());
         return e;
     }
 

@@ -60,6 +60,12 @@ public final class Limits {
     public static final Range THICKNESS = new Range(1e-4, 1, "m");
     /** Each component of a plane's normal (any length from 1e-3 up: it is normalised). */
     public static final Range NORMAL = new Range(-1, 1, "");
+    /** A fabric's in-plane moduli per unit width (E·t, G·t), N/m: from a rubber film to a stiff canvas. */
+    public static final Range MODULUS = new Range(1e-1, 1e7, "N/m");
+    /** A fabric's bending stiffness per unit width, N·m (Kawabata's B of 0.01 gf·cm²/cm is 1e-6). */
+    public static final Range BENDING_STIFFNESS = new Range(1e-6, 1, "N·m");
+    /** Poisson's ratio ν₁₂ before the positive-definite check. */
+    public static final Range POISSON = new Range(-0.99, 10, "");
     /** μₛ and μₖ. */
     public static final Range FRICTION = new Range(0, 10, "");
     /** Each component of a sphere's spin, rad/s. */

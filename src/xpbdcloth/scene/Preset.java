@@ -33,9 +33,12 @@ public final class Preset {
     public final List<PinMotion> pinMotions;
     /** Null when the preset has no wind. */
     public final WindSpec wind;
+    /** The cloth as a material (membrane, dihedral bending, tethers), or null for the spring families alone. */
+    public final FabricSpec fabric;
 
     Preset(String source, String name, String description, Cloth cloth, Map<ConstraintFamily, Material> families, Solver solver,
-           List<SphereSpec> spheres, List<PlaneSpec> planes, List<SolidSpec> solids, SelfCollisionSpec selfCollision, List<PinMotion> pinMotions, WindSpec wind) {
+           List<SphereSpec> spheres, List<PlaneSpec> planes, List<SolidSpec> solids, SelfCollisionSpec selfCollision, List<PinMotion> pinMotions, WindSpec wind,
+           FabricSpec fabric) {
         this.source = source;
         this.name = name;
         this.description = description;
@@ -48,6 +51,24 @@ public final class Preset {
         this.selfCollision = selfCollision;
         this.pinMotions = Collections.unmodifiableList(pinMotions);
         this.wind = wind;
+        this.fabric = fabric;
+    }
+
+    /**
+     * A fabric's elasticity in SI units: moduli per unit width (N/m) along warp and weft, ν₁₂, the shear
+     * modulus (N/m), the bending stiffness (N·m), the warp direction in scene coordinates, and whether
+     * free particles are tethered to their nearest pin.
+     */
+    public static final class FabricSpec {
+        public final String name;
+        public final xpbdcloth.engine.OrthotropicMaterial membrane;
+        public final double bendingStiffness;
+        public final double[] warp;
+        public final boolean tethers;
+
+        FabricSpec(String name, xpbdcloth.engine.OrthotropicMaterial membrane, double bendingStiffness, double[] warp, boolean tethers) {
+            this.name = name; this.membrane = membrane; this.bendingStiffness = bendingStiffness; this.warp = warp.clone(); this.tethers = tethers;
+        }
     }
 
     /**

@@ -32,7 +32,7 @@ import xpbdcloth.mesh.ObjReader;
  */
 public final class PresetLoader {
     /** The presets that ship with the project, in the order the sketch offers them. */
-    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth", "table", "arm", "drop-fold");
+    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth", "table", "arm", "drop-fold", "fabric");
 
     private static final ObjectMapper JSON = new ObjectMapper()
             .enable(JsonParser.Feature.STRICT_DUPLICATE_DETECTION);
@@ -187,12 +187,16 @@ public final class PresetLoader {
         }
 
         Preset preset(Node root) {
-            object(root, Set.of("name", "description", "cloth", "families", "solver", "spheres", "colliders", "selfCollision", "pinMotions", "wind"));
+            object(root, Set.of("name", "description", "cloth", "families", "solver", "spheres", "colliders", "selfCollision", "pinMotions", "wind", "fabric"));
             String name = string(required(root, "name"));
             Node d = optional(root, "description");
             String description = d == null ? "" : string(d);
             Preset.Cloth cloth = cloth(required(root, "cloth"));
-            Map<ConstraintFamily, Preset.Material> families = families(required(root, "families"));
+            Node fn = optional(root, "fabric");
+            Preset.FabricSpec fabric = fn == null ? null : fabric(fn);
+            // A fabric is a whole material: the spring families are then optional (added on top if given).
+            Node fs = fabric == null ? required(root, "families") : optional(root, "families");
+            Map<ConstraintFamily, Preset.Material> families = fs == null ? new EnumMap<>(ConstraintFamily.class) : families(fs);
             Preset.Solver solver = solver(required(root, "solver"));
             List<Preset.SphereSpec> spheres = new ArrayList<>();
             Node ss = optional(root, "spheres");
@@ -221,7 +225,7 @@ public final class PresetLoader {
             long particles = cloth.mesh != null ? cloth.mesh.vertexCount() : (long) cloth.columns * cloth.rows;
             String tooMuch = Limits.workProblem(particles, solver.iterations, solver.substeps, spheres.size() + planes.size() + solids.size(), solver.type != xpbdcloth.engine.SolverType.GAUSS_SEIDEL);
             if (tooMuch != null) throw fail("solver", tooMuch);
-            return new Preset(file, name, description, cloth, families, solver, spheres, planes, solids, self, motions, w == null ? null : wind(w));
+            return new Preset(file, name, description, cloth, families, solver, spheres, planes, solids, self, motions, w == null ? null : wind(w), fabric);
         }
 
         Preset.Cloth cloth(Node n) {
@@ -346,6 +350,27 @@ public final class PresetLoader {
                 throw fail(p.path, "pin [" + row + ", " + col + "] is outside the " + rows + "x" + columns + " grid (rows x columns)");
             out.add(new int[] {row, col});
             return out;
+        }
+
+        /** Moduli per unit width (N/m), ν₁₂ with its positive-definite bound, B (N·m), the warp direction, tethers. */
+        Preset.FabricSpec fabric(Node n) {
+            object(n, Set.of("name", "warpModulus", "weftModulus", "poisson", "shearModulus", "bendingStiffness", "warp", "tethers"));
+            Node nm = optional(n, "name");
+            double e1 = number(required(n, "warpModulus"), Limits.MODULUS), e2 = number(required(n, "weftModulus"), Limits.MODULUS);
+            Node nu = required(n, "poisson");
+            double poisson = number(nu, Limits.POISSON);
+            double g = number(required(n, "shearModulus"), Limits.MODULUS);
+            xpbdcloth.engine.OrthotropicMaterial membrane;
+            try {
+                membrane = new xpbdcloth.engine.OrthotropicMaterial(e1, e2, poisson, g);
+            } catch (IllegalArgumentException e) {
+                throw fail(nu.path, e.getMessage());
+            }
+            Node wd = required(n, "warp");
+            double[] warp = vector(wd, Limits.NORMAL);
+            if (Math.sqrt(warp[0] * warp[0] + warp[1] * warp[1] + warp[2] * warp[2]) < 1e-3) throw fail(wd.path, "must be a direction (length at least 1e-3), was " + java.util.Arrays.toString(warp));
+            Node t = optional(n, "tethers");
+            return new Preset.FabricSpec(nm == null ? "" : string(nm), membrane, number(required(n, "bendingStiffness"), Limits.BENDING_STIFFNESS), warp, t != null && bool(t));
         }
 
         Map<ConstraintFamily, Preset.Material> families(Node n) {

@@ -1,5 +1,7 @@
 package xpbdcloth.scene;
 
+import xpbdcloth.engine.ConstraintBlock;
+import xpbdcloth.fabric.FabricConstraints;
 import xpbdcloth.engine.Cloth;
 import xpbdcloth.engine.ClothBuilder;
 import xpbdcloth.engine.ConstraintFamily;
@@ -37,6 +39,11 @@ public final class Scene {
                 .timestep(s.dt).mullerCorrection(s.mullerCorrection).gravity(s.gravity[0], s.gravity[1], s.gravity[2])
                 .damping(s.damping).solver(s.type);
         simulation = cloth.simulation(settings);
+        if (preset.fabric != null) {
+            Preset.FabricSpec f = preset.fabric;
+            for (ConstraintBlock b : FabricConstraints.build(cloth.particles(), cloth.triangles(), f.warp, f.membrane, f.bendingStiffness, f.tethers))
+                simulation.add(b);
+        }
 
         for (Preset.PlaneSpec pl : preset.planes)
             simulation.add(new Plane(pl.point, pl.normal, pl.margin, pl.staticFriction, pl.kineticFriction));

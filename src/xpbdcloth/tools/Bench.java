@@ -25,7 +25,8 @@ import xpbdcloth.engine.SpherePath;
  *
  * <p>{@code --full} prints the same columns after a first column {@code case}: the row-major order, the
  * Ten Minute Physics workload (15 substeps × 1 iteration, stretch + bending distance constraints), all
- * families with a sphere, N = 256, and the coloured solve on 1 and 2 threads; memory per particle and
+ * families with a sphere, the fabric (membrane + dihedral + tethers), N = 256, and the coloured solve on
+ * 1 and 2 threads; memory per particle and
  * per constraint goes to stderr. Then the contact cases of {@link ContactBench}, under their own header.
  *
  * <p>Timing is a warmed-up loop: at least 2 s of warm-up, then at least 3 s measured; allocation is
@@ -50,6 +51,7 @@ public final class Bench {
         for (int n : new int[] {32, 64, 128}) System.out.println("ten-minute-physics," + row(tenMinutePhysics(n)));
         for (int n : new int[] {32, 64, 128}) System.out.println("all-families-sphere," + row(allFamilies(n, 1)));
         System.out.println("all-families-sphere-2-threads," + row(allFamilies(64, 2)));
+        for (int n : new int[] {32, 64, 128}) System.out.println("fabric," + row(fabric(n)));
         for (int t : new int[] {1, 2}) System.out.println("parallel-" + t + "-threads," + row(grid(128, ConstraintOrder.COLOURED, t)));
         for (int t : new int[] {1, 2}) System.out.println("parallel-" + t + "-threads," + row(grid(256, ConstraintOrder.COLOURED, t)));
         memory();
@@ -102,6 +104,20 @@ public final class Bench {
         Simulation sim = cloth.simulation(new SolverSettings().mode(ConstraintMode.XPBD).iterations(2).substeps(10)
                 .timestep(0.02).order(ConstraintOrder.COLOURED).threads(threads));
         sim.add(new Sphere(SpherePath.oscillation(0, 1.1, 0.1, 0, 0, 0.15, 0.5), 0.2, 0.01, 0.5, 0.35));
+        return sim;
+    }
+
+    /**
+     * The fabric scene's material at N × N: an orthotropic membrane per triangle (three rows each),
+     * dihedral bending on every interior edge and tethers to the two pinned corners, 2 × 10 sweeps.
+     */
+    static Simulation fabric(int n) {
+        Cloth cloth = new ClothBuilder().resolution(n, n).size(1, 1).origin(0, 1.6, 0).arealDensity(0.2).pinTopCorners()
+                .withoutFamily(ConstraintFamily.STRUCTURAL).build();
+        Simulation sim = cloth.simulation(new SolverSettings().mode(ConstraintMode.XPBD).iterations(2).substeps(10)
+                .timestep(0.02).order(ConstraintOrder.COLOURED));
+        for (xpbdcloth.engine.ConstraintBlock b : xpbdcloth.fabric.FabricConstraints.build(cloth.particles(), cloth.triangles(), new double[] {1, 0, 0},
+                new xpbdcloth.engine.OrthotropicMaterial(2000, 800, 0.25, 30), 1e-5, true)) sim.add(b);
         return sim;
     }
 

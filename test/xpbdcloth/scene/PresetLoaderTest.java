@@ -49,6 +49,39 @@ class PresetLoaderTest {
         assertEquals(64, PresetLoader.parse("g.json", global.replace("\"columns\": 4, \"rows\": 4", "\"columns\": 64, \"rows\": 64")).cloth.columns);
     }
 
+    static String fabric(String fields) {
+        return valid().replace(" \"families\": { \"structural\": { \"stiffness\": 1, \"compliance\": 0 } },",
+                " \"fabric\": { " + fields + " },");
+    }
+
+    static final String COTTONISH = "\"warpModulus\": 2000, \"weftModulus\": 800, \"poisson\": 0.25, \"shearModulus\": 30, \"bendingStiffness\": 1e-5, \"warp\": [1, 0, 0]";
+
+    /**
+     * A fabric replaces the spring families (which become optional): the scene gets a membrane row per
+     * triangle and a bend per interior edge; moduli out of range, a Poisson ratio without a
+     * positive-definite stiffness, a zero warp direction and the rebuild period are named by field.
+     */
+    @Test
+    void fabricLoadsAndBadOnesAreNamed() {
+        Scene scene = Scene.of(PresetLoader.parse("f.json", fabric(COTTONISH + ", \"tethers\": true")));
+        // 4 × 4: 18 triangles (3 rows each), 21 interior edges, 15 free particles tethered to the pin.
+        assertEquals(18 * 3 + 21 + 15, scene.simulation().constraintCount());
+        PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse("f.json", fabric(COTTONISH.replace("\"poisson\": 0.25", "\"poisson\": 1.8"))));
+        assertEquals("fabric.poisson", e.field());
+        assertTrue(e.problem().contains("positive-definite"), e.getMessage());
+        e = assertThrows(PresetException.class, () -> PresetLoader.parse("f.json", fabric(COTTONISH.replace("\"warpModulus\": 2000", "\"warpModulus\": -5"))));
+        assertEquals("fabric.warpModulus", e.field());
+        e = assertThrows(PresetException.class, () -> PresetLoader.parse("f.json", fabric(COTTONISH.replace("[1, 0, 0]", "[0, 0, 0]"))));
+        assertEquals("fabric.warp", e.field());
+        e = assertThrows(PresetException.class, () -> PresetLoader.parse("f.json", fabric(COTTONISH.replace("\"bendingStiffness\": 1e-5", "\"bendingStiffness\": 0"))));
+        assertEquals("fabric.bendingStiffness", e.field());
+        // The warp must lie in the cloth: along z it is normal to this vertical cloth, named by the scene.
+        e = assertThrows(PresetException.class, () -> Scene.of(PresetLoader.parse("f.json", fabric(COTTONISH.replace("[1, 0, 0]", "[0, 0, 1]")))));
+        assertTrue(e.problem().contains("warp direction"), e.getMessage());
+        e = assertThrows(PresetException.class, () -> PresetLoader.parse("n.json", valid().replace(" \"families\": { \"structural\": { \"stiffness\": 1, \"compliance\": 0 } },", "")));
+        assertEquals("families", e.field(), "without a fabric the families are still required");
+    }
+
     /** Plane colliders: a floor loads into the scene's simulation; an unknown type and a zero normal are named. */
     @Test
     void planeCollidersLoadAndBadOnesAreNamed() {
@@ -120,6 +153,11 @@ class PresetLoaderTest {
         PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse("thick.json", text.replace("\"thickness\": 0.2", "\"thickness\": 0.5")));
         assertEquals("selfCollision.thickness", e.field(), e.getMessage());
         assertTrue(e.problem().startsWith("must be at most the cloth's shortest edge 0.3333 m, was 0.5000 m"), e.getMessage());
+        assertEquals(1, scene.simulation().selfCollision().rebuildEvery(), "the hash is rebuilt every substep unless the preset says");
+        String every5 = text.replace("\"kineticFriction\": 0.2 }", "\"kineticFriction\": 0.2, \"rebuildEvery\": 5 }");
+        assertEquals(5, Scene.of(PresetLoader.parse("self.json", every5)).simulation().selfCollision().rebuildEvery());
+        e = assertThrows(PresetException.class, () -> PresetLoader.parse("self.json", every5.replace("\"rebuildEvery\": 5", "\"rebuildEvery\": 0")));
+        assertEquals("selfCollision.rebuildEvery", e.field(), e.getMessage());
     }
 
     static void assertProblem(String collider, String field, String problemStart) {

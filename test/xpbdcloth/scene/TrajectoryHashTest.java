@@ -68,7 +68,12 @@ class TrajectoryHashTest {
             Map.entry("drop-fold/xpbd", "59add1b2f95c5d75"),
             Map.entry("drop-fold/pbd", "f4deac02b9a0ab6f"),
             Map.entry("drop-fold/coloured", "3e9f249c9bf12bad"),
-            Map.entry("drop-fold/coloured-2-threads", "3e9f249c9bf12bad"));
+            Map.entry("drop-fold/coloured-2-threads", "3e9f249c9bf12bad"),
+            // The fabric (membrane, dihedral bending, tethers), recorded when it was added; one and two threads agree.
+            Map.entry("fabric/xpbd", "3ef878cb7ab1150d"),
+            Map.entry("fabric/pbd", "e4c672fb2f822136"),
+            Map.entry("fabric/coloured", "e463da5929e74ae1"),
+            Map.entry("fabric/coloured-2-threads", "e463da5929e74ae1"));
 
     static String variantHash(String scene, String variant) {
         Simulation sim = Scene.builtIn(scene).simulation();
