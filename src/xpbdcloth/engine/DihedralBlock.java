@@ -67,10 +67,7 @@ public final class DihedralBlock extends ConstraintBlock {
     public double restAngle(int i) { return restAngle[i]; }
 
     /** The signed dihedral angle θ of constraint i, rad. */
-    public double angle(int i, Particles p) {
-        double[] g = new double[12];
-        return angleAndGradient(i, p.x, g);
-    }
+    public double angle(int i, Particles p) { return angleAndGradient(i, p.x, scratch.get()); }
 
     private static double crossLength(double[] x, int o, int a, int b) {
         double ux = x[3 * o] - x[3 * a], uy = x[3 * o + 1] - x[3 * a + 1], uz = x[3 * o + 2] - x[3 * a + 2];

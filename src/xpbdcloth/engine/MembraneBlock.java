@@ -131,11 +131,17 @@ public final class MembraneBlock extends ConstraintBlock {
         eps[2] = f[0] * f[3] + f[1] * f[4] + f[2] * f[5];
     }
 
+    /** C of constraint i: its row of Lᵀ times the Green strain (no scratch arrays: the HUD's residual calls it every frame). */
     @Override public double evaluate(int i, Particles p) {
-        double[] f = new double[6], eps = new double[3];
-        deformation(i, p.x, f);
-        strain(f, eps);
-        return row[3 * i] * eps[0] + row[3 * i + 1] * eps[1] + row[3 * i + 2] * eps[2];
+        final double[] x = p.x;
+        final int a = 3 * particles[3 * i], b = 3 * particles[3 * i + 1], c = 3 * particles[3 * i + 2];
+        final double P = restInverse[4 * i], Q = restInverse[4 * i + 1], R = restInverse[4 * i + 2], S = restInverse[4 * i + 3];
+        double uu = 0, vv = 0, uv = 0;
+        for (int k = 0; k < 3; k++) {
+            double e1 = x[b + k] - x[a + k], e2 = x[c + k] - x[a + k], fu = e1 * P + e2 * R, fv = e1 * Q + e2 * S;
+            uu += fu * fu; vv += fv * fv; uv += fu * fv;
+        }
+        return row[3 * i] * 0.5 * (uu - 1) + row[3 * i + 1] * 0.5 * (vv - 1) + row[3 * i + 2] * uv;
     }
 
     @Override public void gradient(int i, Particles p, double[] out) {
