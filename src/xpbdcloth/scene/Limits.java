@@ -66,6 +66,10 @@ public final class Limits {
     public static final Range BENDING_STIFFNESS = new Range(1e-6, 1, "N·m");
     /** Poisson's ratio ν₁₂ before the positive-definite check. */
     public static final Range POISSON = new Range(-0.99, 10, "");
+    /** Air's density, kg/m³ (water would be 1000). */
+    public static final Range AIR_DENSITY = new Range(1e-3, 1e3, "kg/m³");
+    /** A flat plate's drag or lift coefficient. */
+    public static final Range AERO_COEFFICIENT = new Range(0, 10, "");
     /** μₛ and μₖ. */
     public static final Range FRICTION = new Range(0, 10, "");
     /** Each component of a sphere's spin, rad/s. */

@@ -35,10 +35,12 @@ public final class Preset {
     public final WindSpec wind;
     /** The cloth as a material (membrane, dihedral bending, tethers), or null for the spring families alone. */
     public final FabricSpec fabric;
+    /** Quadratic drag and lift in moving air, or null. */
+    public final AerodynamicsSpec aerodynamics;
 
     Preset(String source, String name, String description, Cloth cloth, Map<ConstraintFamily, Material> families, Solver solver,
            List<SphereSpec> spheres, List<PlaneSpec> planes, List<SolidSpec> solids, SelfCollisionSpec selfCollision, List<PinMotion> pinMotions, WindSpec wind,
-           FabricSpec fabric) {
+           FabricSpec fabric, AerodynamicsSpec aerodynamics) {
         this.source = source;
         this.name = name;
         this.description = description;
@@ -52,6 +54,17 @@ public final class Preset {
         this.pinMotions = Collections.unmodifiableList(pinMotions);
         this.wind = wind;
         this.fabric = fabric;
+        this.aerodynamics = aerodynamics;
+    }
+
+    /** Air of density ρ (kg/m³) moving at a velocity (m/s), and a flat plate's drag and lift coefficients. */
+    public static final class AerodynamicsSpec {
+        public final double density, drag, lift;
+        public final double[] air;
+
+        AerodynamicsSpec(double density, double drag, double lift, double[] air) {
+            this.density = density; this.drag = drag; this.lift = lift; this.air = air.clone();
+        }
     }
 
     /**

@@ -32,7 +32,7 @@ import xpbdcloth.mesh.ObjReader;
  */
 public final class PresetLoader {
     /** The presets that ship with the project, in the order the sketch offers them. */
-    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth", "table", "arm", "drop-fold", "fabric");
+    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth", "table", "arm", "drop-fold", "fabric", "flag-fabric");
 
     private static final ObjectMapper JSON = new ObjectMapper()
             .enable(JsonParser.Feature.STRICT_DUPLICATE_DETECTION);
@@ -187,7 +187,7 @@ public final class PresetLoader {
         }
 
         Preset preset(Node root) {
-            object(root, Set.of("name", "description", "cloth", "families", "solver", "spheres", "colliders", "selfCollision", "pinMotions", "wind", "fabric"));
+            object(root, Set.of("name", "description", "cloth", "families", "solver", "spheres", "colliders", "selfCollision", "pinMotions", "wind", "fabric", "aerodynamics"));
             String name = string(required(root, "name"));
             Node d = optional(root, "description");
             String description = d == null ? "" : string(d);
@@ -225,7 +225,7 @@ public final class PresetLoader {
             long particles = cloth.mesh != null ? cloth.mesh.vertexCount() : (long) cloth.columns * cloth.rows;
             String tooMuch = Limits.workProblem(particles, solver.iterations, solver.substeps, spheres.size() + planes.size() + solids.size(), solver.type != xpbdcloth.engine.SolverType.GAUSS_SEIDEL);
             if (tooMuch != null) throw fail("solver", tooMuch);
-            return new Preset(file, name, description, cloth, families, solver, spheres, planes, solids, self, motions, w == null ? null : wind(w), fabric);
+            return new Preset(file, name, description, cloth, families, solver, spheres, planes, solids, self, motions, w == null ? null : wind(w), fabric, aerodynamics(optional(root, "aerodynamics")));
         }
 
         Preset.Cloth cloth(Node n) {
@@ -371,6 +371,16 @@ public final class PresetLoader {
             if (Math.sqrt(warp[0] * warp[0] + warp[1] * warp[1] + warp[2] * warp[2]) < 1e-3) throw fail(wd.path, "must be a direction (length at least 1e-3), was " + java.util.Arrays.toString(warp));
             Node t = optional(n, "tethers");
             return new Preset.FabricSpec(nm == null ? "" : string(nm), membrane, number(required(n, "bendingStiffness"), Limits.BENDING_STIFFNESS), warp, t != null && bool(t));
+        }
+
+        /** Quadratic drag and lift: density (kg/m³), coefficients, the air's velocity (m/s); null when absent. */
+        Preset.AerodynamicsSpec aerodynamics(Node n) {
+            if (n == null) return null;
+            object(n, Set.of("density", "drag", "lift", "air"));
+            Node d = optional(n, "density");
+            return new Preset.AerodynamicsSpec(d == null ? xpbdcloth.engine.Aerodynamics.AIR_DENSITY : number(d, Limits.AIR_DENSITY),
+                    number(required(n, "drag"), Limits.AERO_COEFFICIENT), number(required(n, "lift"), Limits.AERO_COEFFICIENT),
+                    vector(required(n, "air"), Limits.SPEED));
         }
 
         Map<ConstraintFamily, Preset.Material> families(Node n) {

@@ -1,5 +1,6 @@
 package xpbdcloth.scene;
 
+import xpbdcloth.engine.Aerodynamics;
 import xpbdcloth.engine.ConstraintBlock;
 import xpbdcloth.fabric.FabricConstraints;
 import xpbdcloth.engine.Cloth;
@@ -43,6 +44,10 @@ public final class Scene {
             Preset.FabricSpec f = preset.fabric;
             for (ConstraintBlock b : FabricConstraints.build(cloth.particles(), cloth.triangles(), f.warp, f.membrane, f.bendingStiffness, f.tethers))
                 simulation.add(b);
+        }
+        if (preset.aerodynamics != null) {
+            Preset.AerodynamicsSpec a = preset.aerodynamics;
+            simulation.add(new Aerodynamics(cloth.triangles(), a.density, a.drag, a.lift).air(a.air[0], a.air[1], a.air[2]));
         }
 
         for (Preset.PlaneSpec pl : preset.planes)

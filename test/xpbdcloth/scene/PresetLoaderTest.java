@@ -80,6 +80,12 @@ class PresetLoaderTest {
         assertTrue(e.problem().contains("warp direction"), e.getMessage());
         e = assertThrows(PresetException.class, () -> PresetLoader.parse("n.json", valid().replace(" \"families\": { \"structural\": { \"stiffness\": 1, \"compliance\": 0 } },", "")));
         assertEquals("families", e.field(), "without a fabric the families are still required");
+        String air = fabric(COTTONISH).replace(" \"solver\":", " \"aerodynamics\": { \"drag\": 1.2, \"lift\": 1.0, \"air\": [6, 0, 0] }, \"solver\":");
+        assertEquals(1.2, PresetLoader.parse("a.json", air).aerodynamics.density, "the air's density by default");
+        e = assertThrows(PresetException.class, () -> PresetLoader.parse("a.json", air.replace("\"drag\": 1.2", "\"drag\": -1")));
+        assertEquals("aerodynamics.drag", e.field());
+        e = assertThrows(PresetException.class, () -> PresetLoader.parse("a.json", air.replace("\"air\": [6, 0, 0]", "\"air\": [6, 0]")));
+        assertEquals("aerodynamics.air", e.field());
     }
 
     /** Plane colliders: a floor loads into the scene's simulation; an unknown type and a zero normal are named. */

@@ -73,7 +73,12 @@ class TrajectoryHashTest {
             Map.entry("fabric/xpbd", "3ef878cb7ab1150d"),
             Map.entry("fabric/pbd", "e4c672fb2f822136"),
             Map.entry("fabric/coloured", "e463da5929e74ae1"),
-            Map.entry("fabric/coloured-2-threads", "e463da5929e74ae1"));
+            Map.entry("fabric/coloured-2-threads", "e463da5929e74ae1"),
+            // The flag as a fabric in moving air (drag and lift), recorded when it was added.
+            Map.entry("flag-fabric/xpbd", "abf62f3061efdaf5"),
+            Map.entry("flag-fabric/pbd", "95dbe6d3b564987"),
+            Map.entry("flag-fabric/coloured", "1f4f52c422278c59"),
+            Map.entry("flag-fabric/coloured-2-threads", "1f4f52c422278c59"));
 
     static String variantHash(String scene, String variant) {
         Simulation sim = Scene.builtIn(scene).simulation();
