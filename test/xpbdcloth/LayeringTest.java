@@ -13,8 +13,8 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
 /**
- * The layering is one-way: tools, library → sketch → scene/experiments → engine → mesh. The engine (and its tests)
- * imports nothing of the layers above it nor of Processing; the scene package nothing of the sketch,
+ * The layering is one-way: tools, library → sketch → scene/experiments → fabric → engine → mesh. The engine (and its tests)
+ * imports nothing of the layers above it nor of Processing; the fabric package nothing above it; the scene package nothing of the sketch,
  * the tools or the experiments. Read from the source text, so a wrong import fails here by name.
  */
 class LayeringTest {
@@ -35,9 +35,16 @@ class LayeringTest {
 
     @Test
     void engineImportsNothingAboveIt() throws IOException {
-        String[] above = {"xpbdcloth.scene", "xpbdcloth.sketch", "xpbdcloth.experiments", "xpbdcloth.tools", "processing."};
+        String[] above = {"xpbdcloth.fabric", "xpbdcloth.scene", "xpbdcloth.sketch", "xpbdcloth.experiments", "xpbdcloth.tools", "processing."};
         assertEquals(List.of(), violations(Path.of("src/xpbdcloth/engine"), above));
         assertEquals(List.of(), violations(Path.of("test/xpbdcloth/engine"), above));
+    }
+
+    /** A cloth as a material is built from the engine's blocks; it knows nothing of scenes or the sketch. */
+    @Test
+    void fabricImportsOnlyTheEngineAndMeshes() throws IOException {
+        String[] above = {"xpbdcloth.scene", "xpbdcloth.sketch", "xpbdcloth.experiments", "xpbdcloth.tools", "xpbdcloth.library", "processing."};
+        assertEquals(List.of(), violations(Path.of("src/xpbdcloth/fabric"), above));
     }
 
     /** Meshes are below the engine: geometry and files, no physics, nothing of the project at all. */
