@@ -61,6 +61,7 @@ final class MeshIndependence implements Experiment {
             double a20 = sag(n, false, seconds, 20), a40 = sag(n, false, seconds, 40);
             double f20 = sag(n, true, seconds, 20), f40 = sag(n, true, seconds, 40);
             t.add(n, a20, a40, f20, f40);
+            ctx.progress(name(), String.format("%d²: sag springs %.4f / %.4f m, fabric %.4f / %.4f m (20 / 40 sweeps)", n, a20, a40, f20, f40));
             xs.add((double) n);
             springs.add(a40);
             fabric.add(f40);
