@@ -18,7 +18,7 @@ package xpbdcloth.engine;
  * Drag", 1965).
  *
  * <p>Like {@link Wind}, the force acts over a whole step and is integrated with the exact decay of a
- * linear drag: the drag is linear in r with the rate k = ½ ρ A C_D |r| /3 per corner (kg/s), and the
+ * linear drag ({@link ExactDecay}): the drag is linear in r with the rate k = ½ ρ A C_D |r| /3 per corner (kg/s), and the
  * step's force is scaled by (1 − e^(−x))/x, x = w·Σk·dt, so the air can slow a particle to the air's
  * speed but never past it (an explicit quadratic drag overshoots once x &gt; 2, and then grows). The
  * price: where something else holds the velocity steady (gravity in a steady fall), the scale still
@@ -32,7 +32,8 @@ public final class Aerodynamics implements ExternalForce {
     private final int[] triangles;
     private final double density, dragCoefficient, liftCoefficient;
     private double ux, uy, uz;
-    private double[] rate, pending;
+    private final ExactDecay decay = new ExactDecay();
+    private final double[] normal = new double[3];
 
     /**
      * @param triangles       three particle indices per triangle
@@ -61,29 +62,18 @@ public final class Aerodynamics implements ExternalForce {
     }
 
     @Override public void apply(Particles p, double t, double dt) {
-        final int n = p.count();
-        if (rate == null || rate.length != n) { rate = new double[n]; pending = new double[3 * n]; }
-        java.util.Arrays.fill(rate, 0);
-        java.util.Arrays.fill(pending, 0);
+        decay.begin(p.count());
         final double[] x = p.x, v = p.v;
         for (int k = 0; k < triangles.length; k += 3) {
             int a = 3 * triangles[k], b = 3 * triangles[k + 1], c = 3 * triangles[k + 2];
-            double e1x = x[b] - x[a], e1y = x[b + 1] - x[a + 1], e1z = x[b + 2] - x[a + 2];
-            double e2x = x[c] - x[a], e2y = x[c + 1] - x[a + 1], e2z = x[c + 2] - x[a + 2];
-            double nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
-            double twiceArea = Math.sqrt(nx * nx + ny * ny + nz * nz);
+            double twiceArea = ExactDecay.twiceAreaAndNormal(x, a, b, c, normal);
             if (twiceArea < 1e-18) continue;
-            nx /= twiceArea; ny /= twiceArea; nz /= twiceArea;
             double perCorner = 0.5 * density * 0.5 * twiceArea / 3; // ½ ρ A / 3
-            corner(triangles[k], a, perCorner, nx, ny, nz, v);
-            corner(triangles[k + 1], b, perCorner, nx, ny, nz, v);
-            corner(triangles[k + 2], c, perCorner, nx, ny, nz, v);
+            corner(triangles[k], a, perCorner, normal[0], normal[1], normal[2], v);
+            corner(triangles[k + 1], b, perCorner, normal[0], normal[1], normal[2], v);
+            corner(triangles[k + 2], c, perCorner, normal[0], normal[1], normal[2], v);
         }
-        for (int i = 0; i < n; i++) {
-            double xi = dt * p.w[i] * rate[i];
-            double scale = xi < 1e-6 ? 1 - 0.5 * xi : -Math.expm1(-xi) / xi;
-            p.addForce(i, scale * pending[3 * i], scale * pending[3 * i + 1], scale * pending[3 * i + 2]);
-        }
+        decay.apply(p, dt);
     }
 
     /** One triangle's drag and lift on one corner, from the corner's own velocity relative to the air. */
@@ -93,7 +83,7 @@ public final class Aerodynamics implements ExternalForce {
         if (speed == 0) return;
         double along = rx * nx + ry * ny + rz * nz; // |r| cos θ, signed
         double k = perCorner * dragCoefficient * speed;
-        rate[i] += k;
+        decay.addRate(i, k);
         double fx = k * along * nx, fy = k * along * ny, fz = k * along * nz;
         // Lift: along the part of n̂ perpendicular to r, |r|² cos θ sin θ = along · |n̂ − (n̂·r̂) r̂| · |r|.
         double px = nx - along / speed * rx / speed, py = ny - along / speed * ry / speed, pz = nz - along / speed * rz / speed;
@@ -102,6 +92,6 @@ public final class Aerodynamics implements ExternalForce {
             double l = perCorner * liftCoefficient * speed * along; // ½ρA/3 · C_L · |r|² cos θ, then · sin θ · p̂ = · p
             fx += l * px; fy += l * py; fz += l * pz;
         }
-        pending[i3] += fx; pending[i3 + 1] += fy; pending[i3 + 2] += fz;
+        decay.addForce(i3, fx, fy, fz);
     }
 }

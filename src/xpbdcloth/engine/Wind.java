@@ -25,8 +25,8 @@ public final class Wind implements ExternalForce {
     private final int[] triangles;
     private double ux, uy, uz;
     private final double drag, gust;
-    /** Per particle: Σ c·A/3 over its triangles (kg/s), and the drag force before the exact-decay scale. */
-    private double[] rate, pending;
+    private final ExactDecay decay = new ExactDecay();
+    private final double[] normal = new double[3];
 
     public Wind(int[] triangles, double ux, double uy, double uz, double drag, double gust) {
         if (triangles == null || triangles.length % 3 != 0)
@@ -54,38 +54,28 @@ public final class Wind implements ExternalForce {
     }
 
     @Override public void apply(Particles p, double t, double dt) {
-        final int n = p.count();
-        if (rate == null || rate.length != n) { rate = new double[n]; pending = new double[3 * n]; }
-        java.util.Arrays.fill(rate, 0);
-        java.util.Arrays.fill(pending, 0);
+        decay.begin(p.count());
         final double[] x = p.x, v = p.v;
         final double g = 1 + gust * Math.sin(0.7 * t) * Math.sin(1.9 * t);
         final double wx = ux * g, wy = uy * g, wz = uz * g;
         for (int k = 0; k < triangles.length; k += 3) {
             int ia = triangles[k], ib = triangles[k + 1], ic = triangles[k + 2];
             int a = 3 * ia, b = 3 * ib, c = 3 * ic;
-            double e1x = x[b] - x[a], e1y = x[b + 1] - x[a + 1], e1z = x[b + 2] - x[a + 2];
-            double e2x = x[c] - x[a], e2y = x[c + 1] - x[a + 1], e2z = x[c + 2] - x[a + 2];
-            double nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
-            double twiceArea = Math.sqrt(nx * nx + ny * ny + nz * nz);
+            double twiceArea = ExactDecay.twiceAreaAndNormal(x, a, b, c, normal);
             if (twiceArea < 1e-18) continue;
-            nx /= twiceArea; ny /= twiceArea; nz /= twiceArea;
+            double nx = normal[0], ny = normal[1], nz = normal[2];
             double perCorner = drag * 0.5 * twiceArea / 3; // kg/s
-            rate[ia] += perCorner; rate[ib] += perCorner; rate[ic] += perCorner;
+            decay.addRate(ia, perCorner); decay.addRate(ib, perCorner); decay.addRate(ic, perCorner);
             push(a, perCorner, nx, ny, nz, wx - v[a], wy - v[a + 1], wz - v[a + 2]);
             push(b, perCorner, nx, ny, nz, wx - v[b], wy - v[b + 1], wz - v[b + 2]);
             push(c, perCorner, nx, ny, nz, wx - v[c], wy - v[c + 1], wz - v[c + 2]);
         }
-        for (int i = 0; i < n; i++) {
-            double xi = dt * p.w[i] * rate[i];
-            double scale = xi < 1e-6 ? 1 - 0.5 * xi : -Math.expm1(-xi) / xi;
-            p.addForce(i, scale * pending[3 * i], scale * pending[3 * i + 1], scale * pending[3 * i + 2]);
-        }
+        decay.apply(p, dt);
     }
 
     /** Adds one triangle's normal drag on one corner, from that corner's own relative velocity (rx, ry, rz). */
     private void push(int i3, double perCorner, double nx, double ny, double nz, double rx, double ry, double rz) {
         double f = perCorner * (rx * nx + ry * ny + rz * nz);
-        pending[i3] += f * nx; pending[i3 + 1] += f * ny; pending[i3 + 2] += f * nz;
+        decay.addForce(i3, f * nx, f * ny, f * nz);
     }
 }
