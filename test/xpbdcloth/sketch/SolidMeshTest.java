@@ -14,7 +14,7 @@ import xpbdcloth.engine.SpherePath;
  * turned away with the negated normal, so a triangle wound the wrong way is drawn dark).
  */
 class SolidMeshTest {
-    static void check(RigidCollider solid, double surfaceTolerance, java.util.function.ToDoubleFunction<double[]> distance) {
+    static void assertOnSurfaceAndWoundOutward(RigidCollider solid, double surfaceTolerance, java.util.function.ToDoubleFunction<double[]> distance) {
         SolidMesh m = new SolidMesh(solid);
         m.place();
         double[] x = m.world, n = m.normals;
@@ -37,7 +37,7 @@ class SolidMeshTest {
         Box box = new Box(SpherePath.fixed(0.1, 0.4, -0.2), new double[] {0.3, 0.2, 0.1}, new double[] {10, 30, 50}, 0, 0.5, 0.4);
         double[] r = new double[9];
         box.rotation(r);
-        check(box, 1e-12, p -> {
+        assertOnSurfaceAndWoundOutward(box, 1e-12, p -> {
             double dx = p[0] - 0.1, dy = p[1] - 0.4, dz = p[2] + 0.2;
             double qx = r[0] * dx + r[3] * dy + r[6] * dz, qy = r[1] * dx + r[4] * dy + r[7] * dz, qz = r[2] * dx + r[5] * dy + r[8] * dz;
             return Math.max(Math.abs(qx) - 0.3, Math.max(Math.abs(qy) - 0.2, Math.abs(qz) - 0.1));
@@ -48,7 +48,7 @@ class SolidMeshTest {
     void aCapsuleIsDrawnOnItsSurfaceWoundOutward() {
         Capsule c = new Capsule(SpherePath.fixed(0, 1, 0), new double[] {1, 1, 0}, 0.25, 0.05, 0, 0.5, 0.4);
         double s = Math.sqrt(0.5);
-        check(c, 1e-12, p -> {
+        assertOnSurfaceAndWoundOutward(c, 1e-12, p -> {
             double t = Math.max(-0.25, Math.min(0.25, s * p[0] + s * (p[1] - 1)));
             return Math.sqrt(Math.pow(p[0] - t * s, 2) + Math.pow(p[1] - 1 - t * s, 2) + p[2] * p[2]) - 0.05;
         });
