@@ -248,6 +248,11 @@ public final class SketchState {
     }
 
     private void forChosen(java.util.function.Consumer<double[]> change) {
+        if (materials.isEmpty()) {
+            error("this cloth is a fabric (" + (preset.fabric == null ? "no spring families" : preset.fabric.name)
+                    + "): k and α belong to spring families, and it has none; its moduli are in the preset's \"fabric\" block");
+            return;
+        }
         ConstraintFamily f = family();
         for (Map.Entry<ConstraintFamily, double[]> e : materials.entrySet())
             if (f == null || e.getKey() == f) change.accept(e.getValue());

@@ -55,6 +55,17 @@ class SketchRefusalsTest {
         assertEquals(901, s.first().settings().iterations());
     }
 
+    /** On a fabric (no spring families) the k and α keys say why they do nothing, instead of doing nothing silently. */
+    @Test
+    void materialKeysOnAFabricSayWhy() {
+        SketchState s = new SketchState(PresetLoader.builtIn("fabric"));
+        s.changeCompliance(+1);
+        assertTrue(s.messageIsError(), s.message());
+        assertTrue(s.message().startsWith("this cloth is a fabric (light woven (illustrative))"), s.message());
+        s.changeStiffness(-1);
+        assertTrue(s.message().contains("it has none"), s.message());
+    }
+
     @Test
     void vInPbdModeSaysSoAndKeepsGaussSeidel() {
         SketchState s = new SketchState(PresetLoader.builtIn("hanging"));
