@@ -38,6 +38,20 @@ public final class OrthotropicMaterial {
         return new OrthotropicMaterial(warpPa * thickness, weftPa * thickness, poisson, shearPa * thickness);
     }
 
+    /**
+     * From the plane-stress stiffness itself (N/m), as data-driven cloth models tabulate it
+     * (energy per area ½Q₁₁ε_uu² + Q₁₂ε_uuε_vv + ½Q₂₂ε_vv² + ½G₁₂γ²): the inverse of {@link #stiffness()},
+     * E₁ = Q₁₁ − Q₁₂²/Q₂₂, E₂ = Q₂₂ − Q₁₂²/Q₁₁, ν₁₂ = Q₁₂/Q₂₂.
+     */
+    public static OrthotropicMaterial fromStiffness(double q11, double q12, double q22, double shearModulus) {
+        Check.inRange("q11", q11, Double.MIN_NORMAL, 1e12);
+        Check.inRange("q22", q22, Double.MIN_NORMAL, 1e12);
+        if (!(q12 * q12 < q11 * q22))
+            throw new IllegalArgumentException(String.format(java.util.Locale.ROOT,
+                    "q12 must satisfy q12² < q11·q22 = %.4g for a positive-definite stiffness, was %s", q11 * q22, q12));
+        return new OrthotropicMaterial(q11 - q12 * q12 / q22, q22 - q12 * q12 / q11, q12 / q22, shearModulus);
+    }
+
     /** An isotropic sheet: E·t, ν, G = E/(2(1 + ν)). */
     public static OrthotropicMaterial isotropic(double modulus, double poisson) {
         return new OrthotropicMaterial(modulus, modulus, poisson, modulus / (2 * (1 + poisson)));

@@ -68,19 +68,17 @@ public final class Preset {
     }
 
     /**
-     * A fabric's elasticity in SI units: moduli per unit width (N/m) along warp and weft, ν₁₂, the shear
-     * modulus (N/m), the bending stiffness (N·m), the warp direction in scene coordinates, and whether
-     * free particles are tethered to their nearest pin.
+     * A cloth as a fabric: the material (moduli per unit width in N/m, ν₁₂, bending stiffness in N·m, and
+     * an areal density when it comes from the catalogue), the warp direction in scene coordinates, and
+     * whether free particles are tethered to their nearest pin.
      */
     public static final class FabricSpec {
-        public final String name;
-        public final xpbdcloth.engine.OrthotropicMaterial membrane;
-        public final double bendingStiffness;
+        public final xpbdcloth.fabric.Fabric fabric;
         public final double[] warp;
         public final boolean tethers;
 
-        FabricSpec(String name, xpbdcloth.engine.OrthotropicMaterial membrane, double bendingStiffness, double[] warp, boolean tethers) {
-            this.name = name; this.membrane = membrane; this.bendingStiffness = bendingStiffness; this.warp = warp.clone(); this.tethers = tethers;
+        FabricSpec(xpbdcloth.fabric.Fabric fabric, double[] warp, boolean tethers) {
+            this.fabric = fabric; this.warp = warp.clone(); this.tethers = tethers;
         }
     }
 

@@ -21,6 +21,9 @@ import java.util.TreeSet;
 import xpbdcloth.engine.ClothBuilder;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.ConstraintMode;
+import xpbdcloth.engine.OrthotropicMaterial;
+import xpbdcloth.fabric.DataDrivenSample;
+import xpbdcloth.fabric.Fabric;
 import xpbdcloth.mesh.ClothMesh;
 import xpbdcloth.mesh.MeshFileException;
 import xpbdcloth.mesh.ObjReader;
@@ -142,6 +145,11 @@ public final class PresetLoader {
         return best;
     }
 
+    /** Parses a fabric catalogue ({@code fabrics.json}); {@code file} names it in errors. */
+    static List<Fabric> parseCatalogue(String file, String text) {
+        return new Reader(file, null).catalogue(new Node(readJson(file, text), ""));
+    }
+
     /** Parses preset text; {@code file} names it in errors; a mesh file is looked up beside it. */
     public static Preset parse(String file, String text) {
         Path parent = Path.of(file).toAbsolutePath().getParent();
@@ -149,15 +157,17 @@ public final class PresetLoader {
     }
 
     static Preset parse(String file, String text, MeshFiles meshes) {
+        return new Reader(file, meshes).preset(new Node(readJson(file, text), ""));
+    }
+
+    private static JsonNode readJson(String file, String text) {
         if (text.isBlank()) throw new PresetException(file, "(file)", "is empty");
-        JsonNode root;
         try {
-            root = JSON.readerFor(JsonNode.class).with(com.fasterxml.jackson.databind.DeserializationFeature.FAIL_ON_TRAILING_TOKENS).readValue(text);
+            return JSON.readerFor(JsonNode.class).with(com.fasterxml.jackson.databind.DeserializationFeature.FAIL_ON_TRAILING_TOKENS).readValue(text);
         } catch (JsonProcessingException e) {
             String where = e.getLocation() == null ? "" : " at line " + e.getLocation().getLineNr() + " column " + e.getLocation().getColumnNr();
             throw new PresetException(file, "(syntax)", "not valid JSON" + where + ": " + inOurWords(e.getOriginalMessage()));
         }
-        return new Reader(file, meshes).preset(new Node(root, ""));
     }
 
     /** A JSON value and its path, for messages. */
@@ -187,13 +197,15 @@ public final class PresetLoader {
         }
 
         Preset preset(Node root) {
+            if (root.json.isObject() && root.json.has("fabrics") && !root.json.has("cloth"))
+                throw fail("", "is the fabric catalogue, not a scene: name one of its fabrics in a preset's \"fabric\": {\"catalogue\": NAME}, or press F on a fabric scene");
             object(root, Set.of("name", "description", "cloth", "families", "solver", "spheres", "colliders", "selfCollision", "pinMotions", "wind", "fabric", "aerodynamics"));
             String name = string(required(root, "name"));
             Node d = optional(root, "description");
             String description = d == null ? "" : string(d);
-            Preset.Cloth cloth = cloth(required(root, "cloth"));
             Node fn = optional(root, "fabric");
             Preset.FabricSpec fabric = fn == null ? null : fabric(fn);
+            Preset.Cloth cloth = cloth(required(root, "cloth"), fabric);
             // A fabric is a whole material: the spring families are then optional (added on top if given).
             Node fs = fabric == null ? required(root, "families") : optional(root, "families");
             Map<ConstraintFamily, Preset.Material> families = fs == null ? new EnumMap<>(ConstraintFamily.class) : families(fs);
@@ -228,8 +240,8 @@ public final class PresetLoader {
             return new Preset(file, name, description, cloth, families, solver, spheres, planes, solids, self, motions, w == null ? null : wind(w), fabric, aerodynamics(optional(root, "aerodynamics")));
         }
 
-        Preset.Cloth cloth(Node n) {
-            if (n.json.isObject() && n.json.has("mesh")) return meshCloth(n);
+        Preset.Cloth cloth(Node n, Preset.FabricSpec fabric) {
+            if (n.json.isObject() && n.json.has("mesh")) return meshCloth(n, fabric);
             object(n, Set.of("columns", "rows", "width", "height", "plane", "origin", "arealDensity", "totalMass", "pins"));
             int columns = integer(required(n, "columns"), Limits.RESOLUTION);
             int rows = integer(required(n, "rows"), Limits.RESOLUTION);
@@ -240,11 +252,7 @@ public final class PresetLoader {
             ClothBuilder.Plane plane = pl == null ? ClothBuilder.Plane.VERTICAL : choice(pl, ClothBuilder.Plane.class);
             Node o = optional(n, "origin");
             double[] origin = o == null ? new double[3] : vector(o, Limits.POSITION);
-            Node ad = optional(n, "arealDensity"), tm = optional(n, "totalMass");
-            if ((ad == null) == (tm == null))
-                throw fail(n.path.isEmpty() ? "cloth" : n.path, "needs exactly one of arealDensity (kg/m²) and totalMass (kg)");
-            double arealDensity = ad == null ? Double.NaN : number(ad, Limits.AREAL_DENSITY);
-            double totalMass = tm == null ? Double.NaN : number(tm, Limits.TOTAL_MASS);
+            double[] mass = mass(n, fabric);
             List<int[]> pins = new ArrayList<>();
             Node ps = optional(n, "pins");
             if (ps != null) {
@@ -253,11 +261,11 @@ public final class PresetLoader {
                 for (Node p : array(ps, Limits.MAX_PIN_ENTRIES))
                     for (int[] rc : pinned(p, columns, rows)) if (seen.add(rc[0] * columns + rc[1])) pins.add(rc);
             }
-            return new Preset.Cloth(columns, rows, width, height, plane, origin, arealDensity, totalMass, pins);
+            return new Preset.Cloth(columns, rows, width, height, plane, origin, mass[0], mass[1], pins);
         }
 
         /** A cloth from a mesh file: placed by scale, rotation and translation; pinned by index, group or box. */
-        Preset.Cloth meshCloth(Node n) {
+        Preset.Cloth meshCloth(Node n, Preset.FabricSpec fabric) {
             object(n, Set.of("mesh", "arealDensity", "totalMass", "pins"));
             Node m = required(n, "mesh");
             object(m, Set.of("file", "weld", "scale", "rotation", "translation"));
@@ -282,15 +290,31 @@ public final class PresetLoader {
             for (int i = 0; i < mesh.vertexCount(); i++)
                 if (!Limits.POSITION.contains(mesh.x(i)) || !Limits.POSITION.contains(mesh.y(i)) || !Limits.POSITION.contains(mesh.z(i)))
                     throw fail(m.path, "vertex " + i + " lands at (" + mesh.x(i) + ", " + mesh.y(i) + ", " + mesh.z(i) + "), outside " + Limits.POSITION.text() + " m");
-            Node ad = optional(n, "arealDensity"), tm = optional(n, "totalMass");
-            if ((ad == null) == (tm == null)) throw fail(n.path, "needs exactly one of arealDensity (kg/m²) and totalMass (kg)");
-            double arealDensity = ad == null ? Double.NaN : number(ad, Limits.AREAL_DENSITY);
-            double totalMass = tm == null ? Double.NaN : number(tm, Limits.TOTAL_MASS);
-            if (ad != null && mesh.area() == 0) throw fail(ad.path, "needs a mesh with faces of non-zero area (" + name + " has none); use totalMass");
+            double[] mass = mass(n, fabric);
+            if (!Double.isNaN(mass[0]) && mesh.area() == 0)
+                throw fail(n.child("arealDensity"), "needs a mesh with faces of non-zero area (" + name + " has none); use totalMass");
             TreeSet<Integer> pinned = new TreeSet<>();
             Node ps = optional(n, "pins");
             if (ps != null) for (Node p : array(ps, Limits.MAX_PIN_ENTRIES)) for (int v : meshPins(p, mesh)) pinned.add(v);
-            return new Preset.Cloth(mesh, name, arealDensity, totalMass, pinned.stream().mapToInt(Integer::intValue).toArray());
+            return new Preset.Cloth(mesh, name, mass[0], mass[1], pinned.stream().mapToInt(Integer::intValue).toArray());
+        }
+
+        /**
+         * The cloth's (arealDensity, totalMass), one of them NaN: exactly one given, or neither when a
+         * catalogue fabric brings its own areal density (then giving one is an error, not a silent choice).
+         */
+        double[] mass(Node n, Preset.FabricSpec fabric) {
+            Node ad = optional(n, "arealDensity"), tm = optional(n, "totalMass");
+            double fabricDensity = fabric == null ? Double.NaN : fabric.fabric.arealDensity;
+            if (!Double.isNaN(fabricDensity)) {
+                Node given = ad != null ? ad : tm;
+                if (given != null)
+                    throw fail(given.path, "the fabric \"" + fabric.fabric.name + "\" brings its own areal density (" + fabricDensity
+                            + " kg/m²): give the cloth's mass or a catalogue fabric, not both");
+                return new double[] {fabricDensity, Double.NaN};
+            }
+            if ((ad == null) == (tm == null)) throw fail(n.path.isEmpty() ? "cloth" : n.path, "needs exactly one of arealDensity (kg/m²) and totalMass (kg)");
+            return new double[] {ad == null ? Double.NaN : number(ad, Limits.AREAL_DENSITY), tm == null ? Double.NaN : number(tm, Limits.TOTAL_MASS)};
         }
 
         /** A vertex index, {"group": name} (an OBJ g/o name) or {"box": {"min": [x,y,z], "max": [x,y,z]}} in scene coordinates. */
@@ -352,25 +376,81 @@ public final class PresetLoader {
             return out;
         }
 
-        /** Moduli per unit width (N/m), ν₁₂ with its positive-definite bound, B (N·m), the warp direction, tethers. */
+        /**
+         * A fabric by catalogue name ({@code fabrics.json}) or by its own moduli per unit width (N/m), ν₁₂
+         * with its positive-definite bound, B (N·m); and the warp direction and tethers either way.
+         */
         Preset.FabricSpec fabric(Node n) {
-            object(n, Set.of("name", "warpModulus", "weftModulus", "poisson", "shearModulus", "bendingStiffness", "warp", "tethers"));
-            Node nm = optional(n, "name");
-            double e1 = number(required(n, "warpModulus"), Limits.MODULUS), e2 = number(required(n, "weftModulus"), Limits.MODULUS);
-            Node nu = required(n, "poisson");
-            double poisson = number(nu, Limits.POISSON);
-            double g = number(required(n, "shearModulus"), Limits.MODULUS);
-            xpbdcloth.engine.OrthotropicMaterial membrane;
-            try {
-                membrane = new xpbdcloth.engine.OrthotropicMaterial(e1, e2, poisson, g);
-            } catch (IllegalArgumentException e) {
-                throw fail(nu.path, e.getMessage());
+            List<String> moduli = List.of("name", "warpModulus", "weftModulus", "poisson", "shearModulus", "bendingStiffness");
+            Set<String> allowed = new java.util.HashSet<>(moduli);
+            allowed.addAll(Set.of("catalogue", "warp", "tethers"));
+            object(n, allowed);
+            Node cat = optional(n, "catalogue");
+            Fabric material;
+            if (cat != null) {
+                String wanted = string(cat);
+                for (String f : moduli)
+                    if (optional(n, f) != null)
+                        throw fail(n.child(f), "comes with the catalogue fabric \"" + wanted + "\": give a catalogue fabric or your own moduli, not both");
+                material = FabricCatalogue.named(wanted);
+                if (material == null)
+                    throw fail(cat.path, "no fabric \"" + wanted + "\" in " + FabricCatalogue.FILE + "; one of " + String.join(", ", FabricCatalogue.names()));
+            } else {
+                Node nm = optional(n, "name");
+                double e1 = number(required(n, "warpModulus"), Limits.MODULUS), e2 = number(required(n, "weftModulus"), Limits.MODULUS);
+                Node nu = required(n, "poisson");
+                double poisson = number(nu, Limits.POISSON);
+                double g = number(required(n, "shearModulus"), Limits.MODULUS);
+                OrthotropicMaterial membrane;
+                try {
+                    membrane = new OrthotropicMaterial(e1, e2, poisson, g);
+                } catch (IllegalArgumentException e) {
+                    throw fail(nu.path, e.getMessage());
+                }
+                material = new Fabric(nm == null ? "" : string(nm), "", "", Double.NaN, membrane, number(required(n, "bendingStiffness"), Limits.BENDING_STIFFNESS));
             }
             Node wd = required(n, "warp");
             double[] warp = vector(wd, Limits.NORMAL);
             if (Math.sqrt(warp[0] * warp[0] + warp[1] * warp[1] + warp[2] * warp[2]) < 1e-3) throw fail(wd.path, "must be a direction (length at least 1e-3), was " + java.util.Arrays.toString(warp));
             Node t = optional(n, "tethers");
-            return new Preset.FabricSpec(nm == null ? "" : string(nm), membrane, number(required(n, "bendingStiffness"), Limits.BENDING_STIFFNESS), warp, t != null && bool(t));
+            return new Preset.FabricSpec(material, warp, t != null && bool(t));
+        }
+
+        /** The fabric catalogue: a source for all, and per fabric its data-driven sample (see {@link DataDrivenSample}). */
+        List<Fabric> catalogue(Node root) {
+            object(root, Set.of("description", "source", "fabrics"));
+            String source = string(required(root, "source"));
+            List<Fabric> out = new ArrayList<>();
+            Set<String> names = new java.util.HashSet<>();
+            for (Node f : array(required(root, "fabrics"), 1000)) {
+                object(f, Set.of("name", "description", "sample", "arealDensity", "stretching", "bending"));
+                Node nm = required(f, "name");
+                String name = string(nm);
+                if (!names.add(name)) throw fail(nm.path, "\"" + name + "\" is listed twice");
+                double density = number(required(f, "arealDensity"), Limits.AREAL_DENSITY);
+                Node st = required(f, "stretching"), bd = required(f, "bending");
+                double[] stretching = numbers(st, 4, Limits.MODULUS.hi), bending = numbers(bd, 3, Limits.BENDING_STIFFNESS.hi);
+                Node d = optional(f, "description");
+                String sample = string(required(f, "sample"));
+                try {
+                    out.add(DataDrivenSample.fabric(name, d == null ? "" : string(d), source + ", sample \"" + sample + "\"", density, stretching, bending));
+                } catch (IllegalArgumentException e) {
+                    throw fail(st.path, e.getMessage());
+                }
+            }
+            return out;
+        }
+
+        /** A JSON array of exactly {@code count} finite numbers, each of magnitude below {@code limit}. */
+        double[] numbers(Node n, int count, double limit) {
+            if (!n.json.isArray() || n.json.size() != count) throw fail(n.path, "must be an array of " + count + " numbers, was " + describe(n.json));
+            double[] out = new double[count];
+            for (int k = 0; k < count; k++) {
+                JsonNode j = n.json.get(k);
+                if (!j.isNumber() || !(Math.abs(j.asDouble()) < limit)) throw fail(n.path + "[" + k + "]", "must be a number of magnitude below " + limit + ", was " + describe(j));
+                out[k] = j.asDouble();
+            }
+            return out;
         }
 
         /** Quadratic drag and lift: density (kg/m³), coefficients, the air's velocity (m/s); null when absent. */

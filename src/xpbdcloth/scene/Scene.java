@@ -2,7 +2,9 @@ package xpbdcloth.scene;
 
 import xpbdcloth.engine.Aerodynamics;
 import xpbdcloth.engine.ConstraintBlock;
+import xpbdcloth.fabric.Fabric;
 import xpbdcloth.fabric.FabricConstraints;
+import xpbdcloth.fabric.FabricSwap;
 import xpbdcloth.engine.Cloth;
 import xpbdcloth.engine.ClothBuilder;
 import xpbdcloth.engine.ConstraintFamily;
@@ -30,6 +32,8 @@ public final class Scene {
     private final Wind wind;
     private final double scriptEnd;
     private boolean windOn;
+    /** The fabric the cloth is now (null if it is springs): the preset's, until {@link #useFabric}. */
+    private Fabric fabric;
 
     private Scene(Preset preset) {
         this.preset = preset;
@@ -42,8 +46,9 @@ public final class Scene {
         simulation = cloth.simulation(settings);
         if (preset.fabric != null) {
             Preset.FabricSpec f = preset.fabric;
-            for (ConstraintBlock b : FabricConstraints.build(cloth.particles(), cloth.triangles(), f.warp, f.membrane, f.bendingStiffness, f.tethers))
+            for (ConstraintBlock b : FabricConstraints.build(cloth.particles(), cloth.triangles(), f.warp, f.fabric.membrane, f.fabric.bendingStiffness, f.tethers))
                 simulation.add(b);
+            fabric = f.fabric;
         }
         if (preset.aerodynamics != null) {
             Preset.AerodynamicsSpec a = preset.aerodynamics;
@@ -147,6 +152,19 @@ public final class Scene {
     }
 
     public Preset preset() { return preset; }
+
+    /** The fabric the cloth is now, or null for a cloth of springs. */
+    public Fabric fabric() { return fabric; }
+
+    /**
+     * Makes the running cloth another fabric (no reset: shape, motion and pins stay; moduli, bending and
+     * areal density change). A cloth of springs has no membrane to change and is refused.
+     */
+    public void useFabric(Fabric next) {
+        if (fabric == null) throw new IllegalArgumentException("fabric: this cloth is springs, not a fabric (its preset has no \"fabric\" block)");
+        FabricSwap.apply(simulation.blocks(), cloth.particles(), next);
+        fabric = next;
+    }
     public Cloth cloth() { return cloth; }
     public Simulation simulation() { return simulation; }
     public Wind wind() { return wind; }

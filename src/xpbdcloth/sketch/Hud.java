@@ -7,6 +7,7 @@ import processing.core.PGraphics;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.Metrics;
 import xpbdcloth.engine.Simulation;
+import xpbdcloth.fabric.Fabric;
 import xpbdcloth.scene.Preset;
 import xpbdcloth.scene.Scene;
 
@@ -63,7 +64,8 @@ final class Hud {
         ConstraintFamily fam = s.shownFamily();
         double[] km = s.material(fam);
         String famName = s.family() == null ? "all (showing " + fam.name().toLowerCase(Locale.ROOT) + ")" : fam.name().toLowerCase(Locale.ROOT);
-        Preset.FabricSpec fabric = s.preset().fabric;
+        Fabric fabric = s.fabric();
+        boolean tethered = s.preset().fabric != null && s.preset().fabric.tethers;
         int constraints = 0;
         for (Scene sc : running) constraints += sc.simulation().constraintCount();
         String[] lines = {
@@ -71,11 +73,13 @@ final class Hud {
                 fmt("iterations %d   substeps %d   dt 1/%.0f s (%.1f ms)", s.iterations(), s.substeps(), 1 / s.dt(), 1000 * s.dt()),
                 fmt("solver %s   residual ‖C + α̃λ‖ %.2e%s", s.solverType().name().toLowerCase(Locale.ROOT).replace('_', '-'), sim.residual(),
                         sim.lastPcgIterations() > 0 ? fmt("   CG iterations %d", sim.lastPcgIterations()) : ""),
-                km == null ? fmt("fabric %s%s", fabric == null ? "(none)" : fabric.name, fabric != null && fabric.tethers ? ", tethered" : "") : fmt("family %s", famName),
+                km == null ? fmt("fabric %s%s%s   (F: next fabric)", fabric == null ? "(none)" : fabric.name, fabric == null || fabric.description.isEmpty() ? "" : " — " + fabric.description,
+                        tethered ? ", tethered" : "") : fmt("family %s", famName),
                 km == null ? (fabric == null ? "" : fmt("  membrane warp %.0f N/m  weft %.0f N/m  ν12 %.2f  shear %.0f N/m", fabric.membrane.warpModulus,
                         fabric.membrane.weftModulus, fabric.membrane.poisson, fabric.membrane.shearModulus))
                         : fmt("  PBD  k %.2f  →  k' %.4f %s", km[0], kPrime(s, km[0]), s.mullerCorrection() ? "(Müller, n=" + s.iterations() + ")" : "(raw k)"),
-                km == null ? (fabric == null ? "" : fmt("  bending %.1e N·m on every interior edge", fabric.bendingStiffness))
+                km == null ? (fabric == null ? "" : fmt("  bending %.1e N·m on every interior edge%s", fabric.bendingStiffness,
+                        Double.isNaN(fabric.arealDensity) ? "" : fmt("   %.0f g/m²", 1000 * fabric.arealDensity)))
                         : fmt("  XPBD α %.2e m/N  →  1/α %s", km[1], km[1] == 0 ? "infinite (hard)" : fmt("%.2e N/m", 1 / km[1])),
                 recording ? "recording: 60 frames per simulated second (wall-clock timings not drawn)"
                         : fmt("sim %.2f ms/step   render %.2f ms   %.0f fps   %.1f kB allocated/frame%s", simMs, renderMs, fps, bytesPerFrame / 1024,

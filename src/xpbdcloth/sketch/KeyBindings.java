@@ -51,6 +51,7 @@ public final class KeyBindings {
         b.add(new KeyBinding('K', "stiffness k -0.05 (PBD)", s -> s.changeStiffness(-1), KeyBindings::material));
         b.add(new KeyBinding('a', "compliance alpha x sqrt(10) (XPBD, softer)", s -> s.changeCompliance(1), KeyBindings::material));
         b.add(new KeyBinding('A', "compliance alpha / sqrt(10) (XPBD, stiffer)", s -> s.changeCompliance(-1), KeyBindings::material));
+        b.add(new KeyBinding('F', "fabric: the next measured fabric, on a fabric scene (no reset)", SketchState::cycleFabric, s -> s.fabric() == null ? null : s.fabric().name));
         b.add(new KeyBinding('b', "side by side: PBD left, XPBD right", SketchState::toggleSideBySide, SketchState::sideBySide));
         // Ten scenes have keys; the others load with --scene or 'l'.
         for (int i = 0; i < Math.min(10, xpbdcloth.scene.PresetLoader.BUILT_IN.size()); i++) {

@@ -10,6 +10,8 @@ import xpbdcloth.engine.Simulation;
 import xpbdcloth.engine.SolverSettings;
 import xpbdcloth.engine.SimulationDivergedException;
 import xpbdcloth.engine.SolverType;
+import xpbdcloth.fabric.Fabric;
+import xpbdcloth.scene.FabricCatalogue;
 import xpbdcloth.scene.Limits;
 import xpbdcloth.scene.Preset;
 import xpbdcloth.scene.PresetException;
@@ -62,6 +64,8 @@ public final class SketchState {
     boolean paused, wireframe, showParticles, showSpheres = true, showGrid = true, showHelp, loadRequested, exportRequested, quitRequested;
     int pendingSteps;
 
+    /** The running cloths' fabric (null: springs): the preset's until the fabric key changes it. */
+    private Fabric fabric;
     private String message = "";
     private boolean messageIsError;
 
@@ -75,6 +79,7 @@ public final class SketchState {
         preset = p;
         shared.solver(SolverType.GAUSS_SEIDEL).mode(p.solver.mode).solver(p.solver.type).iterations(p.solver.iterations)
                 .substeps(p.solver.substeps).timestep(p.solver.dt).mullerCorrection(p.solver.mullerCorrection);
+        fabric = p.fabric == null ? null : p.fabric.fabric;
         materials.clear();
         p.families.forEach((f, m) -> materials.put(f, new double[] {m.stiffness, m.compliance}));
         windOn = p.wind != null;
@@ -108,6 +113,7 @@ public final class SketchState {
                 s.simulation().setStiffness(f, km[0]);
                 s.simulation().setCompliance(f, km[1]);
             });
+            if (fabric != null && s.fabric() != fabric) s.useFabric(fabric);
             s.setWind(windOn);
             boolean has = s.simulation().selfCollision() != null;
             if (selfCollisionOn != has) s.simulation().selfCollision(selfCollisionOn ? Scene.selfCollision(s.cloth(), selfCollisionSpec()) : null);
@@ -249,8 +255,8 @@ public final class SketchState {
 
     private void forChosen(java.util.function.Consumer<double[]> change) {
         if (materials.isEmpty()) {
-            error("this cloth is a fabric (" + (preset.fabric == null ? "no spring families" : preset.fabric.name)
-                    + "): k and α belong to spring families, and it has none; its moduli are in the preset's \"fabric\" block");
+            error("this cloth is a fabric (" + (fabric == null ? "no spring families" : fabric.name)
+                    + "): k and α belong to spring families, and it has none; F changes its fabric");
             return;
         }
         ConstraintFamily f = family();
@@ -258,6 +264,21 @@ public final class SketchState {
             if (f == null || e.getKey() == f) change.accept(e.getValue());
         applyAll();
     }
+
+    /** The running cloth becomes the catalogue's next fabric (no reset); a cloth of springs says it has none. */
+    public void cycleFabric() {
+        if (fabric == null) {
+            error("this cloth is springs, not a fabric: F works on the fabric scenes (fabric, flag-fabric) and presets with a \"fabric\" block");
+            return;
+        }
+        fabric = FabricCatalogue.after(fabric);
+        applyAll();
+        say(String.format(java.util.Locale.ROOT, "fabric %s (%s): %.0f / %.0f N/m, %.0f g/m²", fabric.name, fabric.description,
+                fabric.membrane.warpModulus, fabric.membrane.weftModulus, 1000 * fabric.arealDensity));
+    }
+
+    /** The fabric the cloths are now, or null for cloths of springs. */
+    public Fabric fabric() { return fabric; }
 
     public void selectScene(int index) {
         List<String> names = PresetLoader.BUILT_IN;

@@ -288,7 +288,7 @@ class PresetLoaderTest {
     @Test
     void everyFileInDataLoads() throws IOException {
         try (var files = Files.list(Path.of("data"))) {
-            long n = files.filter(f -> f.toString().endsWith(".json")).peek(f -> {
+            long n = files.filter(f -> f.toString().endsWith(".json") && !f.endsWith(FabricCatalogue.FILE)).peek(f -> {
                 Preset p = PresetLoader.load(f);
                 assertEquals(f.getFileName().toString().replace(".json", ""), p.name, "file name matches preset name");
             }).count();

@@ -28,6 +28,7 @@ class KeyBindingsTest {
             assertFalse(b.help.isBlank(), "key '" + b.key + "' has help text");
             SketchState s = fresh();
             if (b.key == '1') s.selectScene(1); // '1' selects hanging, which is already running
+            if (b.key == 'F') s.selectScene(PresetLoader.BUILT_IN.indexOf("fabric")); // the fabric key needs a fabric
             Object before = b.observe(s);
             b.press(s);
             Object after = b.observe(s);

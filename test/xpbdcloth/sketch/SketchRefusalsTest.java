@@ -7,7 +7,9 @@ import xpbdcloth.engine.ConstraintMode;
 import xpbdcloth.engine.Kinematics;
 import xpbdcloth.engine.Metrics;
 import xpbdcloth.engine.SolverType;
+import xpbdcloth.scene.FabricCatalogue;
 import xpbdcloth.scene.PresetLoader;
+import xpbdcloth.scene.Scene;
 
 /** The sketch says no where the engine does, and a step that diverges pauses the scene instead of losing it. */
 class SketchRefusalsTest {
@@ -61,9 +63,34 @@ class SketchRefusalsTest {
         SketchState s = new SketchState(PresetLoader.builtIn("fabric"));
         s.changeCompliance(+1);
         assertTrue(s.messageIsError(), s.message());
-        assertTrue(s.message().startsWith("this cloth is a fabric (light woven (illustrative))"), s.message());
+        assertTrue(s.message().startsWith("this cloth is a fabric (denim)"), s.message());
         s.changeStiffness(-1);
         assertTrue(s.message().contains("it has none"), s.message());
+    }
+
+    /**
+     * The fabric key: on springs it says so and changes nothing; on a fabric it walks the whole catalogue
+     * (every running cloth, side by side too) and comes back, the cloth running on all the while.
+     */
+    @Test
+    void theFabricKeyCyclesTheCatalogueOrSaysWhyNot() {
+        SketchState springs = new SketchState(PresetLoader.builtIn("hanging"));
+        springs.cycleFabric();
+        assertTrue(springs.messageIsError() && springs.message().startsWith("this cloth is springs"), springs.message());
+        assertNull(springs.fabric());
+        SketchState s = new SketchState(PresetLoader.builtIn("fabric"));
+        s.toggleSideBySide();
+        s.advance();
+        double t = s.time();
+        java.util.List<String> seen = new java.util.ArrayList<>();
+        for (int k = 0; k < FabricCatalogue.all().size(); k++) {
+            s.cycleFabric();
+            seen.add(s.fabric().name);
+            for (Scene sc : s.running()) assertSame(s.fabric(), sc.fabric());
+        }
+        assertEquals("denim", seen.get(seen.size() - 1), "back to the start after the whole catalogue");
+        assertEquals(FabricCatalogue.names().size(), new java.util.HashSet<>(seen).size(), "every fabric once");
+        assertEquals(t, s.time(), 0.0, "no reset");
     }
 
     @Test
