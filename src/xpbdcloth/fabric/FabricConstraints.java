@@ -27,7 +27,8 @@ public final class FabricConstraints {
     /**
      * @param p         the cloth's particles at rest (pinned ones have inverse mass 0)
      * @param triangles three particle indices per triangle
-     * @param warp      the warp direction (x, y, z), projected into each triangle's plane
+     * @param warp      the warp direction (x, y, z), projected into each triangle's plane; or one per
+     *                  triangle (3 numbers each, e.g. {@link #warpFromTextureCoordinates})
      * @param membrane  in-plane elasticity
      * @param bendingStiffness B, N·m (per unit width)
      * @param tethers   whether to tether free particles to their nearest pin
@@ -37,16 +38,48 @@ public final class FabricConstraints {
                                               double bendingStiffness, boolean tethers) {
         if (triangles == null || triangles.length == 0 || triangles.length % 3 != 0)
             throw new IllegalArgumentException("triangles must hold three indices per triangle, had " + (triangles == null ? "null" : triangles.length));
-        if (warp == null || warp.length != 3) throw new IllegalArgumentException("warp must be a direction (x, y, z), was " + Arrays.toString(warp));
+        if (warp == null || warp.length != 3 && warp.length != triangles.length)
+            throw new IllegalArgumentException("warp must be a direction (x, y, z) or one per triangle (" + triangles.length + " numbers), was "
+                    + (warp == null ? "null" : warp.length + " numbers"));
         MembraneBlock m = new MembraneBlock(ConstraintFamily.MEMBRANE, triangles.length / 3);
-        for (int t = 0; t < triangles.length; t += 3)
-            m.addTriangle(p, triangles[t], triangles[t + 1], triangles[t + 2], warp[0], warp[1], warp[2], membrane);
+        for (int t = 0; t < triangles.length; t += 3) {
+            int w = warp.length == 3 ? 0 : t;
+            m.addTriangle(p, triangles[t], triangles[t + 1], triangles[t + 2], warp[w], warp[w + 1], warp[w + 2], membrane);
+        }
         List<ConstraintBlock> blocks = new ArrayList<>(List.of(m, dihedrals(p, triangles, bendingStiffness)));
         if (tethers) {
             TetherBlock t = tethers(p, triangles);
             if (t.count() > 0) blocks.add(t);
         }
         return blocks;
+    }
+
+    /**
+     * The warp of each triangle from the mesh's texture coordinates: the direction in which u grows,
+     * ∂x/∂u = (Δv₂ e₁ − Δv₁ e₂)/(Δu₁Δv₂ − Δu₂Δv₁) with e_k = x_k − x₀ and Δ the corners' (u, v) less
+     * corner 0's (the usual tangent of texture space, as for normal mapping). Pattern pieces laid out in
+     * UV space then keep their grain however the mesh was cut.
+     *
+     * @param uvs (u, v) of each triangle's corners, 6 per triangle
+     * @return 3 numbers per triangle (not normalised; {@link MembraneBlock} projects and normalises)
+     */
+    public static double[] warpFromTextureCoordinates(Particles p, int[] triangles, double[] uvs) {
+        if (uvs == null || uvs.length != 2 * triangles.length)
+            throw new IllegalArgumentException("uvs must hold 6 numbers per triangle (" + 2 * triangles.length + "), was " + (uvs == null ? "null" : uvs.length));
+        double[] out = new double[triangles.length];
+        for (int t = 0; t < triangles.length / 3; t++) {
+            int a = triangles[3 * t], b = triangles[3 * t + 1], c = triangles[3 * t + 2];
+            double du1 = uvs[6 * t + 2] - uvs[6 * t], dv1 = uvs[6 * t + 3] - uvs[6 * t + 1];
+            double du2 = uvs[6 * t + 4] - uvs[6 * t], dv2 = uvs[6 * t + 5] - uvs[6 * t + 1];
+            double det = du1 * dv2 - du2 * dv1;
+            double size = Math.max(Math.abs(du1) + Math.abs(dv1), Math.abs(du2) + Math.abs(dv2));
+            if (!(Math.abs(det) > 1e-12 * size * size))
+                throw new IllegalArgumentException("triangle " + t + " (" + a + ", " + b + ", " + c + ") has texture coordinates of zero area: no warp direction there");
+            out[3 * t] = (dv2 * (p.x(b) - p.x(a)) - dv1 * (p.x(c) - p.x(a))) / det;
+            out[3 * t + 1] = (dv2 * (p.y(b) - p.y(a)) - dv1 * (p.y(c) - p.y(a))) / det;
+            out[3 * t + 2] = (dv2 * (p.z(b) - p.z(a)) - dv1 * (p.z(c) - p.z(a))) / det;
+        }
+        return out;
     }
 
     /** A bend on every edge two triangles share (an edge of more than two triangles bends between the first two). */

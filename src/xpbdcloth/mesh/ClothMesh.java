@@ -20,10 +20,14 @@ public final class ClothMesh {
     private final int[] triangles;
     private final int[] segments;
     private final Map<String, int[]> groups;
+    /** Texture coordinates per triangle corner (u, v; 6 per triangle), or null. */
+    private final double[] triangleUVs;
+    /** Why there are no texture coordinates, for messages (null when there are). */
+    private final String withoutUVs;
     /** The bounding box, per axis (x, y, z). */
     private final double[] min = {Double.MAX_VALUE, Double.MAX_VALUE, Double.MAX_VALUE}, max = {-Double.MAX_VALUE, -Double.MAX_VALUE, -Double.MAX_VALUE};
 
-    private ClothMesh(double[] positions, int[][] faces, int[] triangles, int[] segments, Map<String, int[]> groups) {
+    private ClothMesh(double[] positions, int[][] faces, int[] triangles, int[] segments, Map<String, int[]> groups, double[] triangleUVs, String withoutUVs) {
         for (int i = 0; i < positions.length; i++) {
             min[i % 3] = Math.min(min[i % 3], positions[i]);
             max[i % 3] = Math.max(max[i % 3], positions[i]);
@@ -33,6 +37,8 @@ public final class ClothMesh {
         this.triangles = triangles;
         this.segments = segments;
         this.groups = groups;
+        this.triangleUVs = triangleUVs;
+        this.withoutUVs = triangleUVs == null ? (withoutUVs == null ? "it has no texture coordinates" : withoutUVs) : null;
     }
 
     /**
@@ -72,8 +78,40 @@ public final class ClothMesh {
                 for (int v : e.getValue()) index("group " + e.getKey() + " vertex", v, n);
                 g.put(e.getKey(), e.getValue().clone());
             }
-        return new ClothMesh(positions.clone(), f, t, s, Collections.unmodifiableMap(g));
+        return new ClothMesh(positions.clone(), f, t, s, Collections.unmodifiableMap(g), null, null);
     }
+
+    /**
+     * A mesh whose faces carry texture coordinates, {@code faceUVs[k]} the (u, v) of face k's corners in
+     * order; the faces are split as fans, and each triangle takes its corners' coordinates.
+     */
+    public static ClothMesh withTextureCoordinates(double[] positions, int[][] faces, double[][] faceUVs, int[] segments, Map<String, int[]> groups) {
+        ClothMesh m = of(positions, faces, null, segments, groups);
+        if (faceUVs == null || faceUVs.length != m.faces.length)
+            throw new IllegalArgumentException("faceUVs must give one entry per face (" + m.faces.length + "), was " + (faceUVs == null ? "null" : faceUVs.length));
+        double[] uv = new double[2 * m.triangles.length];
+        int k = 0;
+        for (int f = 0; f < faceUVs.length; f++) {
+            double[] c = faceUVs[f];
+            if (c == null || c.length != 2 * m.faces[f].length)
+                throw new IllegalArgumentException("faceUVs of face " + f + " must be " + 2 * m.faces[f].length + " numbers (u, v per corner), was " + (c == null ? "null" : c.length));
+            for (double x : c) if (!Double.isFinite(x)) throw new IllegalArgumentException("faceUVs of face " + f + " must be finite, was " + java.util.Arrays.toString(c));
+            for (int j = 1; j + 1 < m.faces[f].length; j++)  // the fan, as of() split it
+                for (int corner : new int[] {0, j, j + 1}) { uv[k++] = c[2 * corner]; uv[k++] = c[2 * corner + 1]; }
+        }
+        return new ClothMesh(m.positions, m.faces, m.triangles, m.segments, m.groups, uv, null);
+    }
+
+    /** This mesh without texture coordinates, saying why (for the message of whoever needs them). */
+    public ClothMesh withoutTextureCoordinates(String why) {
+        return new ClothMesh(positions, faces, triangles, segments, groups, null, why);
+    }
+
+    /** Texture coordinates (u, v) of each triangle's corners, 6 per triangle in {@link #triangles()} order; null if none. */
+    public double[] triangleUVs() { return triangleUVs == null ? null : triangleUVs.clone(); }
+
+    /** Why the mesh has no texture coordinates (null if it has them). */
+    public String whyNoTextureCoordinates() { return withoutUVs; }
 
     /** A polyline through the given points in order (a rope). */
     public static ClothMesh polyline(double[] positions) {
@@ -192,6 +230,6 @@ public final class ClothMesh {
             u = x * Math.cos(az) - y * Math.sin(az); y = x * Math.sin(az) + y * Math.cos(az); x = u;
             p[i] = x + t[0]; p[i + 1] = y + t[1]; p[i + 2] = z + t[2];
         }
-        return new ClothMesh(p, faces, triangles, segments, groups);
+        return new ClothMesh(p, faces, triangles, segments, groups, triangleUVs, withoutUVs);
     }
 }

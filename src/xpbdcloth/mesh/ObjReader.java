@@ -21,8 +21,9 @@ import java.util.TreeSet;
  *     {@code v/vt}, {@code v//vn}, {@code v/vt/vn}, with negative indices counting back from the last
  *     vertex; {@code l} polylines (a rope); {@code g} and {@code o} name the vertex groups that the
  *     vertices of the following faces, lines and points ({@code p}, which only tag vertices a face or
- *     line already uses) belong to. Texture coordinates, normals, smoothing and materials
- *     ({@code vt vn vp s usemtl mtllib}) are read past; any other statement is an error, because skipping
+ *     line already uses) belong to. Texture coordinates ({@code vt u v}) are kept when every face gives
+ *     one at every corner (a fabric's warp can follow them); normals, smoothing and materials
+ *     ({@code vn vp s usemtl mtllib}) are read past; any other statement is an error, because skipping
  *     it (a free-form surface, say) would load half a model without a word.</li>
  * <li>Vertices closer than the weld tolerance (m) become one, the first in file order (an exporter
  *     that splits vertices along UV seams would otherwise cut the cloth along them); 0 merges only
@@ -72,6 +73,11 @@ public final class ObjReader {
         final Map<Long, int[]> edgeFaces = new HashMap<>();
         final Map<String, Integer> faceKeys = new HashMap<>();
         final List<Integer> pointLines = new ArrayList<>();
+        final List<double[]> texture = new ArrayList<>();
+        /** Per face, the texture coordinates of its corners (u, v interleaved), or null if it gives none. */
+        final List<double[]> faceUVs = new ArrayList<>();
+        /** The line of the first face without texture coordinates, 0 if every face has them. */
+        int firstFaceWithoutUV;
         final List<int[]> pointSets = new ArrayList<>();
 
         Parse(String file, double tolerance) {
@@ -98,8 +104,9 @@ public final class ObjReader {
                     case "g": case "o":
                         currentGroups = Arrays.asList(Arrays.copyOfRange(tok, 1, tok.length));
                         break;
-                    case "vt": case "vn": case "vp": case "s": case "usemtl": case "mtllib": break;
-                    default: throw fail(ln, "unsupported statement \"" + tok[0] + "\" (a cloth reads v, f, l, p, g, o; vt, vn, vp, s, usemtl, mtllib are read past)");
+                    case "vt": textureCoordinate(ln, tok); break;
+                    case "vn": case "vp": case "s": case "usemtl": case "mtllib": break;
+                    default: throw fail(ln, "unsupported statement \"" + tok[0] + "\" (a cloth reads v, vt, f, l, p, g, o; vn, vp, s, usemtl, mtllib are read past)");
                 }
             }
             if (faces.isEmpty() && segments.isEmpty()) throw fail(0, "has no faces (f) or lines (l): nothing to build a cloth from");
@@ -119,6 +126,37 @@ public final class ObjReader {
             }
             vertices.add(p);
             weldedOf.add(weld(p));
+        }
+
+        void textureCoordinate(int ln, String[] tok) {
+            if (tok.length < 2) throw fail(ln, "a texture coordinate needs u (and v), was none");
+            double[] uv = new double[2];
+            for (int d = 0; d < 2 && d + 1 < tok.length; d++) {
+                try {
+                    uv[d] = Double.parseDouble(tok[d + 1]);
+                } catch (NumberFormatException e) {
+                    throw fail(ln, "texture coordinate " + "uv".charAt(d) + " is not a number: \"" + tok[d + 1] + "\"");
+                }
+                if (!Double.isFinite(uv[d])) throw fail(ln, "texture coordinate " + "uv".charAt(d) + " must be finite, was " + tok[d + 1]);
+            }
+            texture.add(uv);
+        }
+
+        /** The texture coordinate a corner token names ("7/2", "7/2/3"), or null if it names none. */
+        double[] cornerUV(int ln, String token) {
+            String[] parts = token.split("/", -1);
+            if (parts.length < 2 || parts[1].isEmpty()) return null;
+            int i;
+            try {
+                i = Integer.parseInt(parts[1]);
+            } catch (NumberFormatException e) {
+                throw fail(ln, "corner \"" + token + "\": its texture index is not a number");
+            }
+            int n = texture.size();
+            int at = i > 0 ? i - 1 : n + i;
+            if (i == 0 || at < 0 || at >= n)
+                throw fail(ln, "texture index " + i + " is out of range: " + n + " texture coordinates (vt) are defined above this line");
+            return texture.get(at);
         }
 
         /** The welded vertex for p: the first earlier one within the tolerance, or a new one. */
@@ -181,7 +219,15 @@ public final class ObjReader {
                             + " is already a side of the faces on lines " + on[1] + " and " + on[2] + " (a cloth edge has at most two faces)");
                 on[++on[0]] = ln;
             }
+            double[] uv = new double[2 * f.length];
+            for (int j = 0; j < f.length && uv != null; j++) {
+                double[] c = cornerUV(ln, tok[j + 1]);
+                if (c == null) uv = null;
+                else { uv[2 * j] = c[0]; uv[2 * j + 1] = c[1]; }
+            }
+            if (uv == null && firstFaceWithoutUV == 0) firstFaceWithoutUV = ln;
             faces.add(f);
+            faceUVs.add(uv);
             faceLines.add(ln);
             group(f);
         }
@@ -237,7 +283,10 @@ public final class ObjReader {
             for (int k = 0; k < segments.size(); k++) { s[2 * k] = newIndex[segments.get(k)[0]]; s[2 * k + 1] = newIndex[segments.get(k)[1]]; }
             Map<String, int[]> g = new LinkedHashMap<>();
             groups.forEach((name, vs) -> g.put(name, vs.stream().mapToInt(v -> newIndex[v]).sorted().toArray()));
-            ClothMesh mesh = ClothMesh.of(positions, f, null, s, g);
+            ClothMesh mesh = firstFaceWithoutUV == 0 && !faces.isEmpty()
+                    ? ClothMesh.withTextureCoordinates(positions, f, faceUVs.toArray(new double[0][]), s, g)
+                    : ClothMesh.of(positions, f, null, s, g).withoutTextureCoordinates(faces.isEmpty() ? "it has no faces"
+                            : "the face on line " + firstFaceWithoutUV + " has no texture coordinates (vt)");
             for (int k = 0; k < mesh.faceCount(); k++) {
                 int[] corners = mesh.face(k);
                 double longest = 0;

@@ -74,11 +74,12 @@ public final class Preset {
      */
     public static final class FabricSpec {
         public final xpbdcloth.fabric.Fabric fabric;
+        /** The warp direction, or null: then each triangle's from the mesh's texture coordinates (u grows along the warp). */
         public final double[] warp;
         public final boolean tethers;
 
         FabricSpec(xpbdcloth.fabric.Fabric fabric, double[] warp, boolean tethers) {
-            this.fabric = fabric; this.warp = warp.clone(); this.tethers = tethers;
+            this.fabric = fabric; this.warp = warp == null ? null : warp.clone(); this.tethers = tethers;
         }
     }
 

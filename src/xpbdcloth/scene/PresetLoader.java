@@ -206,6 +206,12 @@ public final class PresetLoader {
             Node fn = optional(root, "fabric");
             Preset.FabricSpec fabric = fn == null ? null : fabric(fn);
             Preset.Cloth cloth = cloth(required(root, "cloth"), fabric);
+            if (fabric != null && fabric.warp == null) {
+                if (!cloth.isMesh())
+                    throw fail("fabric.warp", "is missing, and a grid cloth has no texture coordinates to take it from: give the warp direction, e.g. [1, 0, 0]");
+                if (cloth.mesh.triangleUVs() == null)
+                    throw fail("fabric.warp", "is missing, and " + cloth.meshFile + " cannot give it: " + cloth.mesh.whyNoTextureCoordinates() + "; give the warp direction");
+            }
             // A fabric is a whole material: the spring families are then optional (added on top if given).
             Node fs = fabric == null ? required(root, "families") : optional(root, "families");
             Map<ConstraintFamily, Preset.Material> families = fs == null ? new EnumMap<>(ConstraintFamily.class) : families(fs);
@@ -409,9 +415,11 @@ public final class PresetLoader {
                 }
                 material = new Fabric(nm == null ? "" : string(nm), "", "", Double.NaN, membrane, number(required(n, "bendingStiffness"), Limits.BENDING_STIFFNESS));
             }
-            Node wd = required(n, "warp");
-            double[] warp = vector(wd, Limits.NORMAL);
-            if (Math.sqrt(warp[0] * warp[0] + warp[1] * warp[1] + warp[2] * warp[2]) < 1e-3) throw fail(wd.path, "must be a direction (length at least 1e-3), was " + java.util.Arrays.toString(warp));
+            // Without a warp direction, the mesh's texture coordinates give it (checked with the cloth).
+            Node wd = optional(n, "warp");
+            double[] warp = wd == null ? null : vector(wd, Limits.NORMAL);
+            if (warp != null && Math.sqrt(warp[0] * warp[0] + warp[1] * warp[1] + warp[2] * warp[2]) < 1e-3)
+                throw fail(wd.path, "must be a direction (length at least 1e-3), was " + java.util.Arrays.toString(warp));
             Node t = optional(n, "tethers");
             return new Preset.FabricSpec(material, warp, t != null && bool(t));
         }

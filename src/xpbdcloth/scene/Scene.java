@@ -46,7 +46,8 @@ public final class Scene {
         simulation = cloth.simulation(settings);
         if (preset.fabric != null) {
             Preset.FabricSpec f = preset.fabric;
-            for (ConstraintBlock b : FabricConstraints.build(cloth.particles(), cloth.triangles(), f.warp, f.fabric.membrane, f.fabric.bendingStiffness, f.tethers))
+            double[] warp = f.warp != null ? f.warp : FabricConstraints.warpFromTextureCoordinates(cloth.particles(), cloth.triangles(), preset.cloth.mesh.triangleUVs());
+            for (ConstraintBlock b : FabricConstraints.build(cloth.particles(), cloth.triangles(), warp, f.fabric.membrane, f.fabric.bendingStiffness, f.tethers))
                 simulation.add(b);
             fabric = f.fabric;
         }
