@@ -115,31 +115,29 @@ public final class ObjReader {
 
         void vertex(int ln, String[] tok) {
             if (tok.length < 4) throw fail(ln, "a vertex needs x y z, was " + (tok.length - 1) + " numbers");
-            double[] p = new double[3];
-            for (int d = 0; d < 3; d++) {
-                try {
-                    p[d] = Double.parseDouble(tok[d + 1]);
-                } catch (NumberFormatException e) {
-                    throw fail(ln, "vertex coordinate " + "xyz".charAt(d) + " is not a number: \"" + tok[d + 1] + "\"");
-                }
-                if (!Double.isFinite(p[d])) throw fail(ln, "vertex coordinate " + "xyz".charAt(d) + " must be finite, was " + tok[d + 1]);
-            }
+            double[] p = coordinates(ln, tok, "vertex coordinate ", "xyz");
             vertices.add(p);
             weldedOf.add(weld(p));
         }
 
+        /** vt u [v [w]]: a missing v is 0 (a 1-D texture), w is read past. */
         void textureCoordinate(int ln, String[] tok) {
             if (tok.length < 2) throw fail(ln, "a texture coordinate needs u (and v), was none");
-            double[] uv = new double[2];
-            for (int d = 0; d < 2 && d + 1 < tok.length; d++) {
+            texture.add(coordinates(ln, tok, "texture coordinate ", tok.length == 2 ? "u" : "uv"));
+        }
+
+        /** The finite numbers after the statement, one per letter of {@code axes} (named by it in errors), at least two. */
+        double[] coordinates(int ln, String[] tok, String what, String axes) {
+            double[] out = new double[Math.max(axes.length(), 2)];
+            for (int d = 0; d < axes.length(); d++) {
                 try {
-                    uv[d] = Double.parseDouble(tok[d + 1]);
+                    out[d] = Double.parseDouble(tok[d + 1]);
                 } catch (NumberFormatException e) {
-                    throw fail(ln, "texture coordinate " + "uv".charAt(d) + " is not a number: \"" + tok[d + 1] + "\"");
+                    throw fail(ln, what + axes.charAt(d) + " is not a number: \"" + tok[d + 1] + "\"");
                 }
-                if (!Double.isFinite(uv[d])) throw fail(ln, "texture coordinate " + "uv".charAt(d) + " must be finite, was " + tok[d + 1]);
+                if (!Double.isFinite(out[d])) throw fail(ln, what + axes.charAt(d) + " must be finite, was " + tok[d + 1]);
             }
-            texture.add(uv);
+            return out;
         }
 
         /** The texture coordinate a corner token names ("7/2", "7/2/3"), or null if it names none. */
