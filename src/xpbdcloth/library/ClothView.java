@@ -237,6 +237,9 @@ public final class ClothView {
         return this;
     }
 
+    /** A fabric scene's cloth becomes the named measured fabric (see data/fabrics.json), without a reset. */
+    public ClothView fabric(String name) { state.useFabric(name); return this; }
+
     /** The last notice (a refused key, a paused divergence), or "". */
     public String message() { return state.message(); }
 }

@@ -277,6 +277,19 @@ public final class SketchState {
                 fabric.membrane.warpModulus, fabric.membrane.weftModulus, 1000 * fabric.arealDensity));
     }
 
+    /**
+     * The running cloths become the named catalogue fabric (no reset), for code (the library's
+     * {@code ClothView.fabric}); an unknown name or a cloth of springs is refused by name.
+     */
+    public void useFabric(String name) {
+        Fabric next = FabricCatalogue.named(name);
+        if (next == null)
+            throw new IllegalArgumentException("fabric must be one of " + String.join(", ", FabricCatalogue.names()) + ", was \"" + name + "\"");
+        if (fabric == null) throw new IllegalArgumentException("fabric: this cloth is springs, not a fabric; load a scene with a \"fabric\" block (fabric, flag-fabric)");
+        fabric = next;
+        applyAll();
+    }
+
     /** The fabric the cloths are now, or null for cloths of springs. */
     public Fabric fabric() { return fabric; }
 

@@ -91,6 +91,13 @@ class SketchRefusalsTest {
         assertEquals("denim", seen.get(seen.size() - 1), "back to the start after the whole catalogue");
         assertEquals(FabricCatalogue.names().size(), new java.util.HashSet<>(seen).size(), "every fabric once");
         assertEquals(t, s.time(), 0.0, "no reset");
+        // By name, as the library's ClothView.fabric does: a known one is used, others are named.
+        s.useFabric("swimsuit");
+        for (Scene sc : s.running()) assertEquals("swimsuit", sc.fabric().name);
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> s.useFabric("silk"));
+        assertTrue(e.getMessage().startsWith("fabric must be one of denim, interlock") && e.getMessage().endsWith("was \"silk\""), e.getMessage());
+        e = assertThrows(IllegalArgumentException.class, () -> springs.useFabric("denim"));
+        assertTrue(e.getMessage().startsWith("fabric: this cloth is springs"), e.getMessage());
     }
 
     @Test
