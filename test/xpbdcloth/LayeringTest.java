@@ -13,7 +13,7 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
 /**
- * The layering is one-way: tools, library → sketch → scene/experiments → fabric → engine → mesh. The engine (and its tests)
+ * The layering is one-way: tools, library → sketch → fit/experiments → scene → fabric → engine → mesh. The engine (and its tests)
  * imports nothing of the layers above it nor of Processing; the fabric package nothing above it; the scene package nothing of the sketch,
  * the tools or the experiments. Read from the source text, so a wrong import fails here by name.
  */
@@ -35,7 +35,7 @@ class LayeringTest {
 
     @Test
     void engineImportsNothingAboveIt() throws IOException {
-        String[] above = {"xpbdcloth.fabric", "xpbdcloth.scene", "xpbdcloth.sketch", "xpbdcloth.experiments", "xpbdcloth.tools", "processing."};
+        String[] above = {"xpbdcloth.fabric", "xpbdcloth.scene", "xpbdcloth.fit", "xpbdcloth.sketch", "xpbdcloth.experiments", "xpbdcloth.tools", "processing."};
         assertEquals(List.of(), violations(Path.of("src/xpbdcloth/engine"), above));
         assertEquals(List.of(), violations(Path.of("test/xpbdcloth/engine"), above));
     }
@@ -43,7 +43,7 @@ class LayeringTest {
     /** A cloth as a material is built from the engine's blocks; it knows nothing of scenes or the sketch. */
     @Test
     void fabricImportsOnlyTheEngineAndMeshes() throws IOException {
-        String[] above = {"xpbdcloth.scene", "xpbdcloth.sketch", "xpbdcloth.experiments", "xpbdcloth.tools", "xpbdcloth.library", "processing."};
+        String[] above = {"xpbdcloth.scene", "xpbdcloth.fit", "xpbdcloth.sketch", "xpbdcloth.experiments", "xpbdcloth.tools", "xpbdcloth.library", "processing."};
         assertEquals(List.of(), violations(Path.of("src/xpbdcloth/fabric"), above));
     }
 
@@ -56,14 +56,21 @@ class LayeringTest {
 
     @Test
     void sceneImportsNoSketchToolsOrExperiments() throws IOException {
-        String[] above = {"xpbdcloth.sketch", "xpbdcloth.experiments", "xpbdcloth.tools", "processing."};
+        String[] above = {"xpbdcloth.fit", "xpbdcloth.sketch", "xpbdcloth.experiments", "xpbdcloth.tools", "processing."};
         assertEquals(List.of(), violations(Path.of("src/xpbdcloth/scene"), above));
+    }
+
+    /** Fitting sits on scenes and the engine; the sketch and the command line use it, never the reverse. */
+    @Test
+    void fitImportsNoSketchToolsExperimentsOrLibrary() throws IOException {
+        String[] above = {"xpbdcloth.sketch", "xpbdcloth.experiments", "xpbdcloth.tools", "xpbdcloth.library", "processing."};
+        assertEquals(List.of(), violations(Path.of("src/xpbdcloth/fit"), above));
     }
 
     /** The Processing library is a face on the sketch's parts: nothing below it knows it exists. */
     @Test
     void nothingImportsTheLibrary() throws IOException {
-        for (String below : new String[] {"sketch", "scene", "engine", "mesh", "experiments"})
+        for (String below : new String[] {"sketch", "fit", "scene", "engine", "mesh", "experiments"})
             assertEquals(List.of(), violations(Path.of("src/xpbdcloth/" + below), "xpbdcloth.library", "xpbdcloth.tools"));
     }
 

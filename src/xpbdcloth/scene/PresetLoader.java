@@ -35,7 +35,7 @@ import xpbdcloth.mesh.ObjReader;
  */
 public final class PresetLoader {
     /** The presets that ship with the project, in the order the sketch offers them. */
-    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth", "table", "arm", "drop-fold", "fabric", "flag-fabric");
+    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth", "table", "arm", "drop-fold", "fabric", "flag-fabric", "drape");
 
     private static final ObjectMapper JSON = new ObjectMapper()
             .enable(JsonParser.Feature.STRICT_DUPLICATE_DETECTION);
@@ -125,6 +125,22 @@ public final class PresetLoader {
             throw new PresetException(nameOrPath, "(file)", "is neither a built-in scene nor a file; did you mean \"" + nearest(nameOrPath)
                     + "\"? Built-in: " + String.join(", ", BUILT_IN));
         return load(path);
+    }
+
+    /** The JSON text of a built-in preset or a preset file (already loadable: call {@link #byNameOrPath} first). */
+    public static String text(String nameOrPath) {
+        if (BUILT_IN.contains(nameOrPath)) {
+            try (InputStream in = PresetLoader.class.getResourceAsStream("/presets/" + nameOrPath + ".json")) {
+                return new String(in.readAllBytes(), StandardCharsets.UTF_8);
+            } catch (IOException | NullPointerException e) {
+                throw new PresetException(nameOrPath, "(file)", "cannot be read: " + e.getMessage());
+            }
+        }
+        try {
+            return utf8(nameOrPath, Files.readAllBytes(Path.of(nameOrPath)));
+        } catch (IOException e) {
+            throw new PresetException(nameOrPath, "(file)", "cannot be read: " + e.getMessage());
+        }
     }
 
     /** The built-in name with the fewest single-character edits from {@code s}. */

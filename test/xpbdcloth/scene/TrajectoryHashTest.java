@@ -78,7 +78,11 @@ class TrajectoryHashTest {
             Map.entry("flag-fabric/xpbd", "b83c98ae12b01e39"),
             Map.entry("flag-fabric/pbd", "ff1b2f2905e1d076"),
             Map.entry("flag-fabric/coloured", "c117f40df47c8918"),
-            Map.entry("flag-fabric/coloured-2-threads", "c117f40df47c8918"));
+            Map.entry("flag-fabric/coloured-2-threads", "c117f40df47c8918"),
+            Map.entry("drape/xpbd", "6109981fdb8b6c92"),
+            Map.entry("drape/pbd", "d61de05ff5b2de97"),
+            Map.entry("drape/coloured", "bff9d5cf1767698a"),
+            Map.entry("drape/coloured-2-threads", "bff9d5cf1767698a"));
 
     static String variantHash(String scene, String variant) {
         Simulation sim = Scene.builtIn(scene).simulation();

@@ -1,0 +1,154 @@
+package xpbdcloth.tools;
+
+import java.io.File;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import xpbdcloth.engine.ConstraintFamily;
+import xpbdcloth.fit.FitException;
+import xpbdcloth.fit.FitFiles;
+import xpbdcloth.fit.Observation;
+import xpbdcloth.fit.RestShape;
+import xpbdcloth.fit.StaticFit;
+import xpbdcloth.scene.Preset;
+import xpbdcloth.scene.PresetLoader;
+import xpbdcloth.scene.Scene;
+
+/** `xpbd-cloth fit`: recovers compliances from an observed rest shape, or makes such an observation. */
+@Command(name = "fit", mixinStandardHelpOptions = true,
+        description = {"Fits the compliances of a scene's families to an observed rest shape (an OBJ in the scene's vertex order):"
+                + " the equilibrium is differentiated through the implicit function theorem and Gauss-Newton steps in ln(alpha) follow.",
+                "Writes <out>/<scene>-fitted.json (a preset), iterations.csv and fit.png. Exit 0 converged, 1 not converged (files still written), 2 bad input.",
+                "With --make-observation FILE it instead settles the scene, polishes it to its exact equilibrium and writes that shape (plus --noise-mm of noise)."})
+final class FitCommand implements Callable<Integer> {
+    /** The families a preset gives one compliance each, so the fitted preset can say what was fitted. */
+    static final List<ConstraintFamily> FITTABLE = List.of(ConstraintFamily.STRUCTURAL, ConstraintFamily.SHEAR, ConstraintFamily.BEND);
+
+    @Option(names = "--scene", description = "built-in scene or preset file", defaultValue = "drape")
+    String scene;
+
+    @Option(names = "--observed", description = "the observed shape, an OBJ with the scene's vertices in the scene's order")
+    File observed;
+
+    @Option(names = "--params", split = ",", description = "families to fit, of structural, shear, bend (default: those the scene has)")
+    List<String> params;
+
+    @Option(names = "--noise-mm", description = "with --make-observation: Gaussian noise (mm, per coordinate) added to every vertex; with --observed: the noise the observation has, to judge the residual", defaultValue = "0")
+    double noiseMm;
+
+    @Option(names = "--seed", description = "seed of the noise", defaultValue = "1")
+    long seed;
+
+    @Option(names = "--make-observation", description = "write the scene's rest shape to this OBJ instead of fitting")
+    File makeObservation;
+
+    @Option(names = "--start-factor", description = "start the fit from the scene's compliances times this", defaultValue = "1")
+    double startFactor;
+
+    @Option(names = "--max-iterations", description = "Gauss-Newton iterations at most", defaultValue = "30")
+    int maxIterations;
+
+    @Option(names = "--out", description = "folder for the fitted preset, CSV and PNG (default build/fit/<scene>)")
+    File outFolder;
+
+    @picocli.CommandLine.Spec
+    picocli.CommandLine.Model.CommandSpec spec;
+    private java.io.PrintWriter out;
+
+    @Override public Integer call() throws Exception {
+        out = spec.commandLine().getOut();
+        try {
+            return run();
+        } catch (FitException | IllegalArgumentException e) { // PresetException and MeshFileException are IllegalArgumentExceptions
+            spec.commandLine().getErr().println("xpbd-cloth fit: " + e.getMessage());
+            return 2;
+        }
+    }
+
+    private int run() throws Exception {
+        Preset preset = PresetLoader.byNameOrPath(scene);
+        if (!(noiseMm >= 0) || !Double.isFinite(noiseMm)) throw new IllegalArgumentException("noise-mm must be >= 0, was " + noiseMm);
+        if (maxIterations < 1) throw new IllegalArgumentException("max-iterations must be >= 1, was " + maxIterations);
+        if ((makeObservation == null) == (observed == null))
+            throw new IllegalArgumentException("give exactly one of --observed FILE (fit) and --make-observation FILE, was " + (observed == null ? "neither" : "both"));
+        Scene sc = Scene.of(preset);
+        if (makeObservation != null) return makeObservation(sc);
+        List<ConstraintFamily> families = families(preset);
+        double[] shape = Observation.read(observed.toPath(), sc);
+        if (sc.simulation().colliderCount() > 0)
+            out.println("note: " + preset.name + " has " + sc.simulation().colliderCount() + " colliders; the fit assumes none touches the cloth at rest");
+        out.printf(Locale.ROOT, "fitting %s of %s (%d particles) to %s%n", names(families), preset.name, sc.simulation().particles().count(), observed);
+        long t0 = System.nanoTime();
+        StaticFit fit = new StaticFit(sc.simulation(), families, shape, startFactor);
+        print(fit, fit.last());
+        boolean converged = fit.run(maxIterations, it -> print(fit, it));
+        double seconds = (System.nanoTime() - t0) / 1e9;
+        Path folder = outFolder != null ? outFolder.toPath() : Path.of("build", "fit", preset.name);
+        Files.createDirectories(folder);
+        Path json = folder.resolve(preset.name + "-fitted.json");
+        FitFiles.writePreset(json, PresetLoader.text(scene), preset.name + "-fitted", fit, observed.getName());
+        FitFiles.writeCsv(folder.resolve("iterations.csv"), fit);
+        FitFiles.writePng(folder.resolve("fit.png"), fit);
+        StaticFit.Iteration last = fit.last();
+        out.printf(Locale.ROOT, "%s after %d iterations in %.1f s: RMS %.4f mm%n", converged ? "converged" : "NOT converged", last.index, seconds, last.rms * 1e3);
+        if (noiseMm > 0)
+            out.printf(Locale.ROOT, "noise of %.3f mm per coordinate alone leaves an RMS of about %.3f mm%n", noiseMm, noiseMm * Math.sqrt(3));
+        if (!converged) out.printf(Locale.ROOT, "the fit did not converge in %d iterations; last loss %.4e m²; what it reached is written%n", maxIterations, last.loss);
+        out.println("wrote " + json + ", " + folder.resolve("iterations.csv") + ", " + folder.resolve("fit.png"));
+        return converged ? 0 : 1;
+    }
+
+    private int makeObservation(Scene sc) throws Exception {
+        RestShape rest = RestShape.of(sc);
+        double[] shape = Observation.withNoise(rest.positions, noiseMm * 1e-3, seed);
+        Path file = makeObservation.toPath();
+        if (file.toAbsolutePath().getParent() != null) Files.createDirectories(file.toAbsolutePath().getParent());
+        Observation.write(file, sc, shape, String.format(Locale.ROOT, "xpbd-cloth fit --make-observation: %s at rest, noise %.3f mm, seed %d", sc.preset().name, noiseMm, seed));
+        out.printf(Locale.ROOT, "wrote %s: %s at rest (simulated %.1f s, then Newton; the simulator's own rest was %.2f mm from the equilibrium), noise %.3f mm%n",
+                file, sc.preset().name, rest.simulatedSeconds, rest.simulatorGap * 1e3, noiseMm);
+        return 0;
+    }
+
+    private List<ConstraintFamily> families(Preset preset) {
+        List<ConstraintFamily> out = new ArrayList<>();
+        if (params == null) {
+            for (ConstraintFamily f : FITTABLE) if (preset.families.containsKey(f)) out.add(f);
+            if (out.isEmpty()) throw new IllegalArgumentException("params: scene " + preset.name + " has none of structural, shear, bend to fit");
+            return out;
+        }
+        for (String p : params) {
+            ConstraintFamily f = FITTABLE.stream().filter(x -> x.name().equalsIgnoreCase(p.trim())).findFirst()
+                    .orElseThrow(() -> new IllegalArgumentException("params must name structural, shear or bend, was " + p));
+            if (!preset.families.containsKey(f))
+                throw new IllegalArgumentException("params names " + p + ", which scene " + preset.name + " does not have; it has " + present(preset));
+            if (!out.contains(f)) out.add(f);
+        }
+        return out;
+    }
+
+    private static String present(Preset preset) {
+        List<String> s = new ArrayList<>();
+        for (ConstraintFamily f : preset.families.keySet()) s.add(f.name().toLowerCase(Locale.ROOT));
+        return String.join(", ", s);
+    }
+
+    private static String names(List<ConstraintFamily> families) {
+        List<String> s = new ArrayList<>();
+        for (ConstraintFamily f : families) s.add(f.name().toLowerCase(Locale.ROOT));
+        return String.join(", ", s);
+    }
+
+    private void print(StaticFit fit, StaticFit.Iteration it) {
+        int filled = (int) Math.round(20.0 * Math.min(it.index, maxIterations) / maxIterations);
+        StringBuilder s = new StringBuilder(String.format(Locale.ROOT, "[%s%s] it %2d  loss %.3e m²  rms %8.4f mm  |grad| %.2e ",
+                "#".repeat(filled), ".".repeat(20 - filled), it.index, it.loss, it.rms * 1e3, it.gradientNorm));
+        for (int f = 0; f < it.compliance.length; f++)
+            s.append(String.format(Locale.ROOT, " %s %.4e", fit.families().get(f).name().toLowerCase(Locale.ROOT), it.compliance[f]));
+        out.println(s);
+    }
+}

@@ -1,0 +1,77 @@
+package xpbdcloth.tools;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import picocli.CommandLine;
+import xpbdcloth.engine.ConstraintFamily;
+import xpbdcloth.scene.Preset;
+import xpbdcloth.scene.PresetLoader;
+
+/** `xpbd-cloth fit` as a user runs it: make an observation, fit it from a tenth of α*, load what it wrote. */
+class FitCommandTest {
+    final StringWriter out = new StringWriter(), err = new StringWriter();
+
+    int run(String... args) {
+        CommandLine cli = new CommandLine(new Main());
+        cli.setOut(new PrintWriter(out, true));
+        cli.setErr(new PrintWriter(err, true));
+        return cli.execute(args);
+    }
+
+    @Test
+    void theWholeLoopRecoversTheScenesCompliancesAndWritesAPresetThatLoads(@TempDir Path dir) throws Exception {
+        Path shape = dir.resolve("drape-rest.obj");
+        assertEquals(0, run("fit", "--scene", "drape", "--make-observation", shape.toString()), err.toString());
+        assertTrue(out.toString().contains("drape at rest"), out.toString());
+        assertEquals(0, run("fit", "--scene", "drape", "--observed", shape.toString(), "--start-factor", "0.1", "--out", dir.toString()), err.toString());
+        assertTrue(out.toString().contains("converged after"), out.toString());
+        assertTrue(out.toString().contains("[#"), "a progress bar: " + out);
+        Preset fitted = PresetLoader.load(dir.resolve("drape-fitted.json"));
+        Preset truth = PresetLoader.builtIn("drape");
+        for (ConstraintFamily f : new ConstraintFamily[] {ConstraintFamily.STRUCTURAL, ConstraintFamily.SHEAR, ConstraintFamily.BEND})
+            assertEquals(truth.families.get(f).compliance, fitted.families.get(f).compliance, 1e-6 * truth.families.get(f).compliance, f + " α");
+        assertEquals("drape-fitted", fitted.name);
+        String csv = Files.readString(dir.resolve("iterations.csv"));
+        assertTrue(csv.startsWith("iteration,loss_m2,rms_m,gradient_norm,alpha_structural_m_per_N"), csv);
+        assertTrue(csv.lines().count() >= 5, "a row per iteration: " + csv);
+        assertTrue(Files.size(dir.resolve("fit.png")) > 10_000, "the plot is written");
+    }
+
+    @Test
+    void badInputIsAMessageAndExitCodeTwo(@TempDir Path dir) throws Exception {
+        Path rope = dir.resolve("rope.obj");
+        assertEquals(0, run("fit", "--scene", "rope", "--make-observation", rope.toString()));
+        err.getBuffer().setLength(0);
+        assertEquals(2, run("fit", "--scene", "drape", "--observed", rope.toString()));
+        assertTrue(err.toString().contains("vertices and scene drape has 256"), err.toString());
+        err.getBuffer().setLength(0);
+        Path shape = dir.resolve("d.obj");
+        assertEquals(0, run("fit", "--scene", "drape", "--make-observation", shape.toString()));
+        assertEquals(2, run("fit", "--scene", "drape", "--observed", shape.toString(), "--params", "structural,wind"));
+        assertTrue(err.toString().contains("params must name structural, shear or bend, was wind"), err.toString());
+        err.getBuffer().setLength(0);
+        assertEquals(2, run("fit", "--scene", "curtain", "--observed", shape.toString(), "--params", "bend"));
+        assertTrue(err.toString().contains("params names bend, which scene curtain does not have; it has structural"), err.toString());
+        err.getBuffer().setLength(0);
+        Files.writeString(dir.resolve("nan.obj"), Files.readString(shape).replaceFirst("\\nv [^\\n]*", "\nv nan 0 0"));
+        assertEquals(2, run("fit", "--scene", "drape", "--observed", dir.resolve("nan.obj").toString()));
+        assertTrue(err.toString().contains("nan.obj:2: vertex coordinate x is not a number"), err.toString());
+        assertFalse(err.toString().contains("Exception"), "no stack trace: " + err);
+    }
+
+    /** A fit stopped before it converges says so, with the last loss, exits 1 and still writes its files. */
+    @Test
+    void aFitThatDoesNotConvergeSaysSoAndWritesWhatItHas(@TempDir Path dir) throws Exception {
+        Path shape = dir.resolve("drape-rest.obj");
+        assertEquals(0, run("fit", "--scene", "drape", "--make-observation", shape.toString()));
+        assertEquals(1, run("fit", "--scene", "drape", "--observed", shape.toString(), "--start-factor", "10", "--max-iterations", "2", "--out", dir.toString()));
+        assertTrue(out.toString().contains("did not converge in 2 iterations; last loss"), out.toString());
+        assertTrue(Files.exists(dir.resolve("drape-fitted.json")) && Files.exists(dir.resolve("iterations.csv")));
+    }
+}
