@@ -26,6 +26,7 @@ public final class Experiments implements Callable<Integer> {
         e.add(new SubstepsVsIterations());
         e.add(new GlobalSolverComparison());
         e.add(new MeshIndependence());
+        e.add(new FitOnceSimulateAnywhere());
         return e;
     }
 
