@@ -102,6 +102,7 @@ public final class ClothView {
         long now = System.nanoTime();
         double frameSeconds = Math.min(0.25, (now - lastNanos) / 1e9);
         lastNanos = now;
+        state.advanceFit();
         if (!autoStep) return;
         if (state.paused()) {
             pacer.reset();
@@ -239,6 +240,14 @@ public final class ClothView {
 
     /** A fabric scene's cloth becomes the named measured fabric (see data/fabrics.json), without a reset. */
     public ClothView fabric(String name) { state.useFabric(name); return this; }
+
+    /**
+     * Fits the cloth's spring compliances to an observed rest shape (an OBJ with the scene's vertices in
+     * its order, e.g. from {@code xpbd-cloth fit --make-observation}), one iteration a frame, the
+     * observation drawn as a ghost; when it ends the cloth takes the fitted α. False (see
+     * {@link #message()}) when the file is not an observation of this scene.
+     */
+    public boolean fit(String objPath) { return state.startFit(java.nio.file.Path.of(objPath)); }
 
     /** The last notice (a refused key, a paused divergence), or "". */
     public String message() { return state.message(); }

@@ -177,6 +177,14 @@ public final class ClothApp {
             state.exportRequested = false;
             exportMeshes();
         }
+        if (state.fitRequested) {
+            state.fitRequested = false;
+            if (!choosing) {
+                choosing = true;
+                app.selectInput("Fit to an observed rest shape (OBJ, the scene's vertex order)", "observationSelected", null, this);
+            }
+        }
+        state.advanceFit();
         if (state.loadRequested) {
             state.loadRequested = false;
             // One chooser at a time, and the sketch ignores keys while it is open (they are meant for it).
@@ -275,6 +283,11 @@ public final class ClothApp {
     public void presetSelected(File file) {
         choosing = false;
         if (file != null) state.load(Path.of(file.getPath()));
+    }
+
+    public void observationSelected(File file) {
+        choosing = false;
+        if (file != null) state.startFit(Path.of(file.getPath()));
     }
 
     /** True while the preset file chooser is open. */

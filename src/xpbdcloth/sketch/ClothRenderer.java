@@ -94,8 +94,24 @@ public final class ClothRenderer {
             if (state.showSpheres) for (Sphere s : sc.simulation().spheres()) drawSphere(g, s);
             if (state.showSpheres) for (Plane pl : sc.simulation().planes()) drawPlane(g, pl, sc.cloth());
             if (state.showSpheres) for (RigidCollider s : sc.simulation().solids()) drawSolid(g, s);
+            if (i == 0 && state.fit() != null) drawGhost(g, state.fit());
             g.popMatrix();
         }
+    }
+
+    /** The observed shape a fit is matching, as a pale wireframe. */
+    void drawGhost(PGraphics g, LiveFit fit) {
+        double[] x = fit.observed;
+        int[] e = fit.edges;
+        g.strokeWeight(1.2f * strokeUnit);
+        g.stroke(235, 235, 255, 150);
+        g.beginShape(PConstants.LINES);
+        for (int k = 0; k < e.length; k += 2) {
+            int a = 3 * e[k], b = 3 * e[k + 1];
+            g.vertex((float) x[a], (float) x[a + 1], (float) x[a + 2]);
+            g.vertex((float) x[b], (float) x[b + 1], (float) x[b + 2]);
+        }
+        g.endShape();
     }
 
     /** Squares across the cloth's longer side, and how much darker every second one is. */

@@ -93,7 +93,16 @@ final class Hud {
                         + (sim.selfCollision() == null ? "   self-collision off" : fmt("   self-collision %.1f mm, %d pairs near", 1000 * sim.selfCollision().thickness(), sim.selfCollision().pairCount())),
                 s.showHelp ? "h: hide the keys" : "h: keys   q: quit",
         };
-        return lines;
+        LiveFit fit = s.fit();
+        if (fit == null) return lines;
+        StringBuilder f = new StringBuilder(fmt("fit to %s: iteration %d   RMS %.3f mm  ", fit.source, fit.fit.last().index, 1e3 * fit.fit.last().rms));
+        for (int k = 0; k < fit.fit.families().size(); k++)
+            f.append(fmt("  %s α %.3g", fit.fit.families().get(k).name().toLowerCase(Locale.ROOT), fit.fit.last().compliance[k]));
+        f.append(fit.finished ? (fit.fit.converged() ? "   converged" : "   stopped") : "");
+        String[] with = java.util.Arrays.copyOf(lines, lines.length + 1);
+        with[lines.length] = lines[lines.length - 1];
+        with[lines.length - 1] = f.toString();
+        return with;
     }
 
     private HudLayout layout;
@@ -144,7 +153,8 @@ final class Hud {
         }
 
         plot(g, l.strainPlot.x + 4, l.strainPlot.y + 18, "max strain %", strain, running.size());
-        plot(g, l.energyPlot.x + 4, l.energyPlot.y + 18, "kinetic energy J", kinetic, running.size());
+        if (s.fit() != null) plot(g, l.energyPlot.x + 4, l.energyPlot.y + 18, "fit: loss as RMS to the observation, mm", s.fit().plotted, 1);
+        else plot(g, l.energyPlot.x + 4, l.energyPlot.y + 18, "kinetic energy J", kinetic, running.size());
 
         if (labels != null) {
             g.noStroke();

@@ -61,7 +61,9 @@ public final class SketchState {
     private double windAngle, windSpeed;
 
     // View toggles.
-    boolean paused, wireframe, showParticles, showSpheres = true, showGrid = true, showHelp, loadRequested, exportRequested, quitRequested;
+    boolean paused, wireframe, showParticles, showSpheres = true, showGrid = true, showHelp, loadRequested, exportRequested, quitRequested, fitRequested;
+    /** The fit the p key started, or null. */
+    private LiveFit fit;
     int pendingSteps;
 
     /** The running cloths' fabric (null: springs): the preset's until the fabric key changes it. */
@@ -88,6 +90,7 @@ public final class SketchState {
         windAngle = Math.atan2(u[2], u[0]);
         windSpeed = Math.hypot(u[0], u[2]);
         closeRunning();
+        fit = null;
         tearingSaid = false;
         main = fresh;
         left = right = null;
@@ -321,6 +324,53 @@ public final class SketchState {
             error(file + ": " + e.getMessage());
             return false;
         }
+    }
+
+    /** The running fit (p), or null. */
+    LiveFit fit() { return fit; }
+
+    /**
+     * Starts fitting the running cloth's spring compliances to an observed rest shape (an OBJ in the
+     * scene's vertex order), from the α it has now; one iteration runs each frame ({@link #advanceFit}).
+     * A file that is not an observation of this scene is refused with its reason and changes nothing.
+     */
+    public boolean startFit(Path obj) {
+        if (sideBySide) { error("fit: one cloth at a time; b leaves side by side"); return false; }
+        if (mode() != ConstraintMode.XPBD) { error("fit: a fit finds XPBD's compliance α; m switches to XPBD"); return false; }
+        try {
+            double[] observed = xpbdcloth.fit.Observation.read(obj, main);
+            fit = new LiveFit(preset, materials, observed, obj.getFileName().toString());
+            say("fitting " + fitted() + " to " + obj.getFileName() + ": one iteration a frame, the observation drawn as a ghost");
+            return true;
+        } catch (xpbdcloth.fit.FitException | IllegalArgumentException e) {
+            error(e.getMessage());
+            return false;
+        }
+    }
+
+    /** One iteration of the running fit; when it ends, the running cloth takes the fitted compliances. */
+    public void advanceFit() {
+        if (fit == null || fit.finished) return;
+        try {
+            if (fit.iterate()) return;
+        } catch (xpbdcloth.fit.FitException e) {
+            fit.finished = true;
+            error("fit stopped: " + e.getMessage());
+            return;
+        }
+        double[] alpha = fit.fit.compliance();
+        for (int f = 0; f < alpha.length; f++) materials.get(fit.fit.families().get(f))[1] = alpha[f];
+        applyAll();
+        say(String.format(java.util.Locale.ROOT, "%s after %d iterations, RMS %.3f mm: the cloth now has %s",
+                fit.fit.converged() ? "fitted" : "fit not converged", fit.fit.last().index, 1e3 * fit.fit.last().rms, fitted()));
+    }
+
+    private String fitted() {
+        StringBuilder b = new StringBuilder();
+        for (ConstraintFamily f : LiveFit.SPRINGS)
+            if (materials.containsKey(f)) b.append(b.length() == 0 ? "" : ", ").append(f.name().toLowerCase(java.util.Locale.ROOT))
+                    .append(String.format(java.util.Locale.ROOT, " α %.3g", materials.get(f)[1]));
+        return b.toString();
     }
 
     public void toggleSideBySide() {
