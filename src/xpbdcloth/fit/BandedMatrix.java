@@ -1,7 +1,5 @@
 package xpbdcloth.fit;
 
-import java.util.Arrays;
-
 /**
  * A symmetric n × n matrix with half-bandwidth b (entry (i, j) is zero when |i − j| &gt; b), stored as its
  * lower band, and its Cholesky factor L Lᵀ in the same storage.
@@ -37,32 +35,11 @@ final class BandedMatrix {
         return i - j > band ? 0 : lower[at(i, j)];
     }
 
-    void clear() {
-        Arrays.fill(lower, 0);
-        factored = false;
-    }
-
     BandedMatrix copy() {
         BandedMatrix m = new BandedMatrix(n, band);
         System.arraycopy(lower, 0, m.lower, 0, lower.length);
         m.factored = factored;
         return m;
-    }
-
-    /** y = A x (before factoring). */
-    void multiply(double[] x, double[] y) {
-        if (factored) throw new IllegalStateException("the matrix holds its factor now");
-        Arrays.fill(y, 0, n, 0);
-        for (int i = 0; i < n; i++) {
-            int j0 = Math.max(0, i - band);
-            double s = 0;
-            for (int j = j0; j < i; j++) {
-                double a = lower[at(i, j)];
-                s += a * x[j];
-                y[j] += a * x[i];
-            }
-            y[i] += s + lower[at(i, i)] * x[i];
-        }
     }
 
     /**

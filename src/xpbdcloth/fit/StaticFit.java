@@ -90,8 +90,6 @@ public final class StaticFit {
     public List<ConstraintFamily> families() { return families; }
     public List<Iteration> history() { return Collections.unmodifiableList(history); }
     public boolean converged() { return converged; }
-    /** The current equilibrium (full positions, the scene's vertex order). */
-    public double[] shape() { return current.positions.clone(); }
     /** α per fitted family now. */
     public double[] compliance() {
         double[] a = new double[theta.length];

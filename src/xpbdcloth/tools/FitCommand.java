@@ -125,16 +125,10 @@ final class FitCommand implements Callable<Integer> {
             ConstraintFamily f = FITTABLE.stream().filter(x -> x.name().equalsIgnoreCase(p.trim())).findFirst()
                     .orElseThrow(() -> new IllegalArgumentException("params must name structural, shear or bend, was " + p));
             if (!preset.families.containsKey(f))
-                throw new IllegalArgumentException("params names " + p + ", which scene " + preset.name + " does not have; it has " + present(preset));
+                throw new IllegalArgumentException("params names " + p + ", which scene " + preset.name + " does not have; it has " + names(new ArrayList<>(preset.families.keySet())));
             if (!out.contains(f)) out.add(f);
         }
         return out;
-    }
-
-    private static String present(Preset preset) {
-        List<String> s = new ArrayList<>();
-        for (ConstraintFamily f : preset.families.keySet()) s.add(f.name().toLowerCase(Locale.ROOT));
-        return String.join(", ", s);
     }
 
     private static String names(List<ConstraintFamily> families) {
