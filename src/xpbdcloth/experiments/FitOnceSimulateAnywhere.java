@@ -3,7 +3,6 @@ package xpbdcloth.experiments;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.function.ToDoubleFunction;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.ConstraintMode;
 import xpbdcloth.engine.Simulation;
@@ -17,7 +16,8 @@ import xpbdcloth.scene.Scene;
  * (1) XPBD's α by the static fit (the equilibrium's own energy, no solver in it);
  * (2) XPBD's α, (3) PBD's k with Müller's k', (4) PBD's k without it, each by simulating the cloth to rest
  * at n = 10 sweeps and dt = 1/60 s (one substep, damping 2/s, 8 s) and minimising the RMS distance to the
- * observation with Nelder–Mead (ln α, or the logit of k, per family).
+ * observation with {@link NelderMead} (ln α, or the logit of k, per family): a simulated rest has no
+ * derivative this project computes, and three parameters are few enough to search without one.
  * Each set is then simulated to rest at n = 2 … 1000 (dt = 1/60 s) and at dt = 1/30 … 1/960 s
  * (n = 10), and its distance to the observation measured. The claim under test: α fitted once reproduces
  * the drape wherever the solver converges; a k fitted at one setting does not.
@@ -68,69 +68,6 @@ final class FitOnceSimulateAnywhere implements Experiment {
         return p;
     }
 
-    /** Nelder–Mead (Lagarias et al. 1998's coefficients) from u0 with initial steps of 1; at most {@code evaluations}. */
-    static double[] nelderMead(ToDoubleFunction<double[]> f, double[] u0, int evaluations) {
-        int n = u0.length;
-        double[][] s = new double[n + 1][];
-        double[] v = new double[n + 1];
-        for (int i = 0; i <= n; i++) {
-            s[i] = u0.clone();
-            if (i > 0) s[i][i - 1] += 1;
-            v[i] = f.applyAsDouble(s[i]);
-        }
-        int used = n + 1;
-        while (used < evaluations) {
-            Integer[] order = new Integer[n + 1];
-            for (int i = 0; i <= n; i++) order[i] = i;
-            final double[] vv = v;
-            java.util.Arrays.sort(order, (a, b) -> Double.compare(vv[a], vv[b]));
-            double[][] s2 = new double[n + 1][];
-            double[] v2 = new double[n + 1];
-            for (int i = 0; i <= n; i++) { s2[i] = s[order[i]]; v2[i] = v[order[i]]; }
-            s = s2;
-            v = v2;
-            if (v[n] - v[0] <= 1e-6 * Math.abs(v[0]) + 1e-12) break;
-            double[] centroid = new double[n];
-            for (int i = 0; i < n; i++) for (int d = 0; d < n; d++) centroid[d] += s[i][d] / n;
-            double[] reflected = along(centroid, s[n], -1);
-            double fr = f.applyAsDouble(reflected);
-            used++;
-            if (fr < v[0]) {
-                double[] expanded = along(centroid, s[n], -2);
-                double fe = f.applyAsDouble(expanded);
-                used++;
-                if (fe < fr) { s[n] = expanded; v[n] = fe; } else { s[n] = reflected; v[n] = fr; }
-            } else if (fr < v[n - 1]) {
-                s[n] = reflected;
-                v[n] = fr;
-            } else {
-                double[] contracted = fr < v[n] ? along(centroid, s[n], -0.5) : along(centroid, s[n], 0.5);
-                double fc = f.applyAsDouble(contracted);
-                used++;
-                if (fc < Math.min(fr, v[n])) {
-                    s[n] = contracted;
-                    v[n] = fc;
-                } else {
-                    for (int i = 1; i <= n; i++) {
-                        s[i] = along(s[0], s[i], 0.5);
-                        v[i] = f.applyAsDouble(s[i]);
-                        used++;
-                    }
-                }
-            }
-        }
-        int best = 0;
-        for (int i = 1; i <= n; i++) if (v[i] < v[best]) best = i;
-        return s[best];
-    }
-
-    /** c + t·(p − c). */
-    private static double[] along(double[] c, double[] p, double t) {
-        double[] out = new double[c.length];
-        for (int d = 0; d < c.length; d++) out[d] = c[d] + t * (p[d] - c[d]);
-        return out;
-    }
-
     @Override public List<String> run(Context ctx) throws IOException {
         double[] observed = RestShape.of(Scene.builtIn("drape")).positions;
         double seconds = ctx.quick ? 4 : SETTLE_SECONDS;
@@ -151,7 +88,7 @@ final class FitOnceSimulateAnywhere implements Experiment {
         for (Model m : Model.values()) {
             double[] u0 = new double[3];
             for (int f = 0; f < 3; f++) u0[f] = m == Model.XPBD ? Math.log(truth[f] * 0.1) : 0; // α from a tenth, k from ½
-            double[] u = nelderMead(x -> restDistance(m, toParams(m, x), FIT_SWEEPS, FIT_STEP, observed, seconds), u0, evaluations);
+            double[] u = NelderMead.minimise(x -> restDistance(m, toParams(m, x), FIT_SWEEPS, FIT_STEP, observed, seconds), u0, evaluations);
             labels.add(m.label + ", fitted at n = 10, dt = 1/60 s");
             models.add(m);
             fitted.add(toParams(m, u));
