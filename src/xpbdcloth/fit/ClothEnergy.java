@@ -141,9 +141,9 @@ final class ClothEnergy {
         return blocks.get(k).compliance(i) * (f < 0 ? 1 : scale[f]);
     }
 
-    /** The scene's α of a fitted family at the current scales (its first constraint's, for a per-constraint family). */
-    double familyCompliance(int f) {
-        for (int k = 0; k < blocks.size(); k++) if (parameterOf[k] == f) return compliance(k, 0);
+    /** The scene's own α of fitted family f, unscaled (its first constraint's, for a per-constraint family). */
+    double sceneCompliance(int f) {
+        for (int k = 0; k < blocks.size(); k++) if (parameterOf[k] == f) return blocks.get(k).compliance(0);
         throw new IllegalArgumentException("parameter must name a fitted family, was " + f);
     }
 
@@ -173,7 +173,8 @@ final class ClothEnergy {
     /** ∇E on the free degrees of freedom. */
     void gradient(double[] positions, double[] out) {
         java.util.Arrays.fill(out, 0, freeDofs, 0);
-        for (int k = 0; k < blocks.size(); k++) addForces(k, positions, out);
+        load(positions);
+        for (int k = 0; k < blocks.size(); k++) addForces(k, out);
         for (int i = 0; i < mass.length; i++) {
             int d = dofOf[3 * i];
             if (d < 0) continue;
@@ -189,11 +190,12 @@ final class ClothEnergy {
      */
     void familyForce(double[] positions, int f, double[] out) {
         java.util.Arrays.fill(out, 0, freeDofs, 0);
-        for (int k = 0; k < blocks.size(); k++) if (parameterOf[k] == f) addForces(k, positions, out);
+        load(positions);
+        for (int k = 0; k < blocks.size(); k++) if (parameterOf[k] == f) addForces(k, out);
     }
 
-    private void addForces(int k, double[] positions, double[] out) {
-        load(positions);
+    /** Adds Σ Cⱼ∇Cⱼ/αⱼ of the k-th block at the loaded positions. */
+    private void addForces(int k, double[] out) {
         ConstraintBlock b = blocks.get(k);
         int arity = b.arity();
         for (int i = 0; i < b.count(); i++) {

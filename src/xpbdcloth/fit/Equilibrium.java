@@ -27,7 +27,7 @@ final class Equilibrium {
     /** The rest shape nearest {@code start} (full positions; pinned particles stay where start has them). */
     static Equilibrium solve(ClothEnergy energy, double[] start, double weight) {
         Equilibrium eq = new Equilibrium(start.clone());
-        double[] x = eq.positions, g = new double[energy.freeDofs], trial = new double[x.length];
+        double[] x = eq.positions, g = new double[energy.freeDofs], gTrial = new double[energy.freeDofs], trial = new double[x.length];
         double tolerance = FORCE_TOLERANCE * weight, shift = 0;
         double e = energy.energy(x);
         for (eq.iterations = 0; eq.iterations < MAX_ITERATIONS; eq.iterations++) {
@@ -54,7 +54,6 @@ final class Equilibrium {
             if (delta == null) return eq;
             double slope = dot(g, delta), t = 1;
             boolean moved = false;
-            double[] gTrial = new double[g.length];
             while (t > 1e-12) {
                 System.arraycopy(x, 0, trial, 0, x.length);
                 energy.addFree(trial, t, delta);

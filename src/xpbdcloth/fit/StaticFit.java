@@ -91,10 +91,12 @@ public final class StaticFit {
     public List<Iteration> history() { return Collections.unmodifiableList(history); }
     public boolean converged() { return converged; }
     /** α per fitted family now. */
-    public double[] compliance() {
-        double[] a = new double[theta.length];
-        energy.setLogScales(theta);
-        for (int f = 0; f < a.length; f++) a[f] = energy.familyCompliance(f);
+    public double[] compliance() { return compliance(theta); }
+
+    /** α per fitted family at θ: the scene's α times e^θ. */
+    private double[] compliance(double[] th) {
+        double[] a = new double[th.length];
+        for (int f = 0; f < a.length; f++) a[f] = energy.sceneCompliance(f) * Math.exp(th[f]);
         return a;
     }
 
@@ -109,15 +111,6 @@ public final class StaticFit {
             throw new FitException("the rest shape at α = " + java.util.Arrays.toString(compliance(th))
                     + " is not a stable equilibrium (its Hessian is not positive definite: the cloth would buckle away from it)");
         return eq;
-    }
-
-    private double[] compliance(double[] th) {
-        double[] keep = theta;
-        theta = th;
-        double[] a = compliance();
-        theta = keep;
-        energy.setLogScales(keep);
-        return a;
     }
 
     private double lossAt(Equilibrium eq) {
@@ -234,7 +227,7 @@ public final class StaticFit {
     private Iteration record() {
         double[] g = gradient();
         double norm = Math.sqrt(Equilibrium.dot(g, g));
-        return new Iteration(history.size(), loss, Math.sqrt(2 * loss / energy.freeDofs * 3), norm, compliance(), solves);
+        return new Iteration(history.size(), loss, Math.sqrt(2 * loss / (energy.freeDofs / 3.0)), norm, compliance(), solves);
     }
 
     /** (A + λ diag A) δ = −b for a small dense A (one row per family), by Gaussian elimination with pivoting. */

@@ -20,7 +20,7 @@ final class LiveFit {
 
     final String source;
     final double[] observed;
-    /** Each triangle's three edges as vertex pairs, for the ghost wireframe. */
+    /** The mesh's edges, each once, as vertex pairs: the ghost wireframe. */
     final int[] edges;
     final StaticFit fit;
     /** The loss of each iteration as the RMS distance to the observation, mm (the HUD plot). */
@@ -41,13 +41,7 @@ final class LiveFit {
         this.fit = new StaticFit(copy.simulation(), families, observed, 1);
         this.observed = observed;
         this.source = source;
-        int[] t = copy.cloth().triangles();
-        edges = new int[2 * t.length];
-        for (int k = 0; k < t.length; k += 3)
-            for (int e = 0; e < 3; e++) {
-                edges[2 * (k + e)] = t[k + e];
-                edges[2 * (k + e) + 1] = t[k + (e + 1) % 3];
-            }
+        edges = xpbdcloth.mesh.MeshTopology.of(copy.cloth().mesh()).edges();
         rmsMm.add(1e3 * fit.last().rms);
     }
 
