@@ -79,10 +79,10 @@ class TrajectoryHashTest {
             Map.entry("flag-fabric/pbd", "ff1b2f2905e1d076"),
             Map.entry("flag-fabric/coloured", "c117f40df47c8918"),
             Map.entry("flag-fabric/coloured-2-threads", "c117f40df47c8918"),
-            Map.entry("drape/xpbd", "6109981fdb8b6c92"),
-            Map.entry("drape/pbd", "d61de05ff5b2de97"),
-            Map.entry("drape/coloured", "bff9d5cf1767698a"),
-            Map.entry("drape/coloured-2-threads", "bff9d5cf1767698a"));
+            Map.entry("drape/xpbd", "7ffe14b300dc64c1"),
+            Map.entry("drape/pbd", "3a6d82288364fea7"),
+            Map.entry("drape/coloured", "a8bb04e42677a8a1"),
+            Map.entry("drape/coloured-2-threads", "a8bb04e42677a8a1"));
 
     static String variantHash(String scene, String variant) {
         Simulation sim = Scene.builtIn(scene).simulation();
