@@ -90,6 +90,9 @@ public final class Simulation {
     public int colliderCount() { return spheres.size() + planes.size() + solids.size(); }
     public List<ExternalForce> forces() { return java.util.Collections.unmodifiableList(forces); }
 
+    /** Whether anything moves particles by script (pin scripts, kinematic paths). */
+    public boolean hasKinematics() { return !kinematics.isEmpty(); }
+
     /**
      * Views of the constraints in solve order (cloth constraints, then attachments), made when first
      * asked for after the set changed; do not modify. The solvers work on {@link #blocks()}.

@@ -23,28 +23,7 @@ import xpbdcloth.engine.Simulation;
  * few (one per family), so J costs a back-substitution each with the factor the equilibrium already made,
  * and near a fit with small residual JᵀJ is the Hessian of L; Levenberg's λ keeps steps where it is not.
  */
-public final class StaticFit {
-    /** One iteration's record: the loss, its gradient and the compliances it reached. */
-    public static final class Iteration {
-        public final int index;
-        /** L (m²) and the RMS distance of the free particles to the observation (m). */
-        public final double loss, rms;
-        /** |∂L/∂θ| (m², per unit of ln α). */
-        public final double gradientNorm;
-        /** α per fitted family (m/N), in {@link #families} order. */
-        public final double[] compliance;
-        public final int equilibriumSolves;
-
-        Iteration(int index, double loss, double rms, double gradientNorm, double[] compliance, int equilibriumSolves) {
-            this.index = index;
-            this.loss = loss;
-            this.rms = rms;
-            this.gradientNorm = gradientNorm;
-            this.compliance = compliance;
-            this.equilibriumSolves = equilibriumSolves;
-        }
-    }
-
+public final class StaticFit implements MaterialFit {
     /** A step in ln α larger than this (a factor of e³ ≈ 20) is cut to it: the linearisation is not trusted further. */
     static final double MAX_LOG_STEP = 3;
     /** Converged when no ln α moves by more than this (a relative change of 1e-7). */
@@ -60,7 +39,7 @@ public final class StaticFit {
     private double lambda = 1e-3;
     private boolean converged;
     private int solves;
-    private final List<Iteration> history = new ArrayList<>();
+    private final List<FitIteration> history = new ArrayList<>();
 
     /**
      * A fit of {@code families} of the simulation's cloth to {@code observed} (3 per particle, the scene's
@@ -87,11 +66,13 @@ public final class StaticFit {
 
     private static double sq(double v) { return v * v; }
 
-    public List<ConstraintFamily> families() { return families; }
-    public List<Iteration> history() { return Collections.unmodifiableList(history); }
-    public boolean converged() { return converged; }
-    /** α per fitted family now. */
-    public double[] compliance() { return compliance(theta); }
+    @Override public List<ConstraintFamily> families() { return families; }
+    @Override public boolean fitsDamping() { return false; }
+    @Override public String kind() { return "static"; }
+    @Override public String solvesName() { return "equilibrium_solves"; }
+    @Override public List<FitIteration> history() { return Collections.unmodifiableList(history); }
+    @Override public boolean converged() { return converged; }
+    @Override public double[] compliance() { return compliance(theta); }
 
     /** α per fitted family at θ: the scene's α times e^θ. */
     private double[] compliance(double[] th) {
@@ -163,7 +144,7 @@ public final class StaticFit {
     double forceResidual() { return current.forceResidual; }
 
     /** One Levenberg–Marquardt iteration; false once converged (then it does nothing). */
-    public boolean iterate() {
+    @Override public boolean iterate() {
         if (converged) return false;
         double[][] jac = sensitivities();
         double[] r = residual(current);
@@ -215,19 +196,10 @@ public final class StaticFit {
         return false;
     }
 
-    /** Runs until converged or {@code maxIterations} iterations; true if it converged. */
-    public boolean run(int maxIterations, java.util.function.Consumer<Iteration> progress) {
-        while (history.size() <= maxIterations && iterate()) if (progress != null) progress.accept(last());
-        if (progress != null && converged) progress.accept(last());
-        return converged;
-    }
-
-    public Iteration last() { return history.get(history.size() - 1); }
-
-    private Iteration record() {
+    private FitIteration record() {
         double[] g = gradient();
         double norm = Math.sqrt(Equilibrium.dot(g, g));
-        return new Iteration(history.size(), loss, Math.sqrt(2 * loss / (energy.freeDofs / 3.0)), norm, compliance(), solves);
+        return new FitIteration(history.size(), loss, Math.sqrt(2 * loss / (energy.freeDofs / 3.0)), norm, compliance(), Double.NaN, solves);
     }
 
     /** (A + λ diag A) δ = −b for a small dense A (one row per family), by Gaussian elimination with pivoting. */

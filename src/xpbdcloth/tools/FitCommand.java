@@ -12,19 +12,26 @@ import picocli.CommandLine.Option;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.fit.FitException;
 import xpbdcloth.fit.FitFiles;
+import xpbdcloth.fit.DynamicFit;
+import xpbdcloth.fit.FitIteration;
+import xpbdcloth.fit.MaterialFit;
 import xpbdcloth.fit.Observation;
 import xpbdcloth.fit.RestShape;
 import xpbdcloth.fit.StaticFit;
+import xpbdcloth.fit.Trajectory;
 import xpbdcloth.scene.Preset;
 import xpbdcloth.scene.PresetLoader;
 import xpbdcloth.scene.Scene;
 
-/** `xpbd-cloth fit`: recovers compliances from an observed rest shape, or makes such an observation. */
+/** `xpbd-cloth fit`: recovers compliances (and damping) from an observed rest shape or motion, or makes such an observation. */
 @Command(name = "fit", mixinStandardHelpOptions = true,
         description = {"Fits the compliances of a scene's families to an observed rest shape (an OBJ in the scene's vertex order):"
                 + " the equilibrium is differentiated through the implicit function theorem and Gauss-Newton steps in ln(alpha) follow.",
+                "Given a folder of OBJ frames instead (a trajectory, one per step of the scene's dt, the first after one step) it fits"
+                + " the compliances and the damping to the motion: every substep is differentiated in reverse and BFGS steps follow.",
                 "Writes <out>/<scene>-fitted.json (a preset), iterations.csv and fit.png. Exit 0 converged, 1 not converged (files still written), 2 bad input.",
-                "With --make-observation FILE it instead settles the scene, polishes it to its exact equilibrium and writes that shape (plus --noise-mm of noise)."})
+                "With --make-observation FILE it instead settles the scene, polishes it to its exact equilibrium and writes that shape (plus --noise-mm of noise);"
+                + " with --make-observation DIR --frames N it writes the scene's first N steps."})
 final class FitCommand implements Callable<Integer> {
     /** The families a preset gives one compliance each, so the fitted preset can say what was fitted. */
     static final List<ConstraintFamily> FITTABLE = List.of(ConstraintFamily.STRUCTURAL, ConstraintFamily.SHEAR, ConstraintFamily.BEND);
@@ -32,10 +39,10 @@ final class FitCommand implements Callable<Integer> {
     @Option(names = "--scene", description = "built-in scene or preset file", defaultValue = "drape")
     String scene;
 
-    @Option(names = "--observed", description = "the observed shape, an OBJ with the scene's vertices in the scene's order")
+    @Option(names = "--observed", description = "the observed shape, an OBJ with the scene's vertices in the scene's order; or a folder of such OBJs, one per step (a trajectory)")
     File observed;
 
-    @Option(names = "--params", split = ",", description = "families to fit, of structural, shear, bend (default: those the scene has)")
+    @Option(names = "--params", split = ",", description = "what to fit, of structural, shear, bend and (for a trajectory) damping (default: the families the scene has, and its damping if it has one and a trajectory is fitted)")
     List<String> params;
 
     @Option(names = "--noise-mm", description = "with --make-observation: Gaussian noise (mm, per coordinate) added to every vertex; with --observed: the noise the observation has, to judge the residual", defaultValue = "0")
@@ -44,13 +51,16 @@ final class FitCommand implements Callable<Integer> {
     @Option(names = "--seed", description = "seed of the noise", defaultValue = "1")
     long seed;
 
-    @Option(names = "--make-observation", description = "write the scene's rest shape to this OBJ instead of fitting")
+    @Option(names = "--make-observation", description = "write the scene's rest shape to this OBJ instead of fitting (with --frames: its first steps into this folder)")
     File makeObservation;
+
+    @Option(names = "--frames", description = "with --make-observation: write this many steps of the scene's motion (a trajectory) instead of its rest", defaultValue = "0")
+    int frames;
 
     @Option(names = "--start-factor", description = "start the fit from the scene's compliances times this", defaultValue = "1")
     double startFactor;
 
-    @Option(names = "--max-iterations", description = "Gauss-Newton iterations at most", defaultValue = "30")
+    @Option(names = "--max-iterations", description = "iterations at most (Gauss-Newton for a shape, BFGS for a trajectory)", defaultValue = "60")
     int maxIterations;
 
     @Option(names = "--out", description = "folder for the fitted preset, CSV and PNG (default build/fit/<scene>)")
@@ -74,17 +84,30 @@ final class FitCommand implements Callable<Integer> {
         Preset preset = PresetLoader.byNameOrPath(scene);
         if (!(noiseMm >= 0) || !Double.isFinite(noiseMm)) throw new IllegalArgumentException("noise-mm must be >= 0, was " + noiseMm);
         if (maxIterations < 1) throw new IllegalArgumentException("max-iterations must be >= 1, was " + maxIterations);
+        if (frames < 0) throw new IllegalArgumentException("frames must be >= 0, was " + frames);
         if ((makeObservation == null) == (observed == null))
             throw new IllegalArgumentException("give exactly one of --observed FILE (fit) and --make-observation FILE, was " + (observed == null ? "neither" : "both"));
         Scene sc = Scene.of(preset);
-        if (makeObservation != null) return makeObservation(sc);
-        List<ConstraintFamily> families = families(preset);
-        double[] shape = Observation.read(observed.toPath(), sc);
-        if (sc.simulation().colliderCount() > 0)
-            out.println("note: " + preset.name + " has " + sc.simulation().colliderCount() + " colliders; the fit assumes none touches the cloth at rest");
-        out.printf(Locale.ROOT, "fitting %s of %s (%d particles) to %s%n", names(families), preset.name, sc.simulation().particles().count(), observed);
+        if (makeObservation != null) return frames > 0 ? makeTrajectory(sc) : makeObservation(sc);
+        boolean dynamic = Files.isDirectory(observed.toPath());
+        boolean fitsDamping = fitsDamping(preset, dynamic);
+        List<ConstraintFamily> families = families(preset, dynamic);
+        if (families.isEmpty() && !fitsDamping) throw new IllegalArgumentException("params must name at least one of structural, shear, bend" + (dynamic ? ", damping" : "") + ", was empty");
         long t0 = System.nanoTime();
-        StaticFit fit = new StaticFit(sc.simulation(), families, shape, startFactor);
+        MaterialFit fit;
+        String what = names(families) + (fitsDamping ? (families.isEmpty() ? "" : ", ") + "damping" : "");
+        if (dynamic) {
+            double[][] trajectory = Trajectory.read(observed.toPath(), sc);
+            out.printf(Locale.ROOT, "fitting %s of %s (%d particles) to %d frames (%.2f s) in %s%n", what, preset.name,
+                    sc.simulation().particles().count(), trajectory.length, trajectory.length * sc.simulation().settings().timestep(), observed);
+            fit = new DynamicFit(sc.simulation(), families, fitsDamping, trajectory, startFactor);
+        } else {
+            double[] shape = Observation.read(observed.toPath(), sc);
+            if (sc.simulation().colliderCount() > 0)
+                out.println("note: " + preset.name + " has " + sc.simulation().colliderCount() + " colliders; the fit assumes none touches the cloth at rest");
+            out.printf(Locale.ROOT, "fitting %s of %s (%d particles) to %s%n", what, preset.name, sc.simulation().particles().count(), observed);
+            fit = new StaticFit(sc.simulation(), families, shape, startFactor);
+        }
         print(fit, fit.last());
         boolean converged = fit.run(maxIterations, it -> print(fit, it));
         double seconds = (System.nanoTime() - t0) / 1e9;
@@ -94,7 +117,7 @@ final class FitCommand implements Callable<Integer> {
         FitFiles.writePreset(json, PresetLoader.text(scene), preset.name + "-fitted", fit, observed.getName());
         FitFiles.writeCsv(folder.resolve("iterations.csv"), fit);
         FitFiles.writePng(folder.resolve("fit.png"), fit);
-        StaticFit.Iteration last = fit.last();
+        FitIteration last = fit.last();
         out.printf(Locale.ROOT, "%s after %d iterations in %.1f s: RMS %.4f mm%n", converged ? "converged" : "NOT converged", last.index, seconds, last.rms * 1e3);
         if (noiseMm > 0)
             out.printf(Locale.ROOT, "noise of %.3f mm per coordinate alone leaves an RMS of about %.3f mm%n", noiseMm, noiseMm * Math.sqrt(3));
@@ -114,7 +137,26 @@ final class FitCommand implements Callable<Integer> {
         return 0;
     }
 
-    private List<ConstraintFamily> families(Preset preset) {
+    private int makeTrajectory(Scene sc) throws Exception {
+        double[][] motion = Trajectory.simulate(sc, frames, noiseMm * 1e-3, seed);
+        Path folder = makeObservation.toPath();
+        List<Path> files = Trajectory.write(folder, sc, motion, String.format(Locale.ROOT,
+                "xpbd-cloth fit --make-observation: %s, noise %.3f mm, seed %d", sc.preset().name, noiseMm, seed));
+        out.printf(Locale.ROOT, "wrote %d frames (%.2f s of %s from its start, one per step of %.4f s) to %s, noise %.3f mm%n",
+                files.size(), frames * sc.simulation().settings().timestep(), sc.preset().name, sc.simulation().settings().timestep(), folder, noiseMm);
+        return 0;
+    }
+
+    /** Whether "damping" is among the params (or, by default, for a trajectory of a damped scene). */
+    private boolean fitsDamping(Preset preset, boolean dynamic) {
+        if (params == null) return dynamic && preset.solver.damping > 0;
+        boolean named = params.stream().anyMatch(p -> p.trim().equalsIgnoreCase("damping"));
+        if (named && !dynamic)
+            throw new IllegalArgumentException("params names damping, which a rest shape does not depend on: observe a trajectory (a folder of frames) to fit it");
+        return named;
+    }
+
+    private List<ConstraintFamily> families(Preset preset, boolean dynamic) {
         List<ConstraintFamily> out = new ArrayList<>();
         if (params == null) {
             for (ConstraintFamily f : FITTABLE) if (preset.families.containsKey(f)) out.add(f);
@@ -122,8 +164,9 @@ final class FitCommand implements Callable<Integer> {
             return out;
         }
         for (String p : params) {
+            if (dynamic && p.trim().equalsIgnoreCase("damping")) continue;
             ConstraintFamily f = FITTABLE.stream().filter(x -> x.name().equalsIgnoreCase(p.trim())).findFirst()
-                    .orElseThrow(() -> new IllegalArgumentException("params must name structural, shear or bend, was " + p));
+                    .orElseThrow(() -> new IllegalArgumentException("params must name structural, shear, bend" + (dynamic ? " or damping" : " or (for a trajectory) damping") + ", was " + p));
             if (!preset.families.containsKey(f))
                 throw new IllegalArgumentException("params names " + p + ", which scene " + preset.name + " does not have; it has " + names(new ArrayList<>(preset.families.keySet())));
             if (!out.contains(f)) out.add(f);
@@ -137,12 +180,13 @@ final class FitCommand implements Callable<Integer> {
         return String.join(", ", s);
     }
 
-    private void print(StaticFit fit, StaticFit.Iteration it) {
+    private void print(MaterialFit fit, FitIteration it) {
         int filled = (int) Math.round(20.0 * Math.min(it.index, maxIterations) / maxIterations);
         StringBuilder s = new StringBuilder(String.format(Locale.ROOT, "[%s%s] it %2d  loss %.3e m²  rms %8.4f mm  |grad| %.2e ",
                 "#".repeat(filled), ".".repeat(20 - filled), it.index, it.loss, it.rms * 1e3, it.gradientNorm));
         for (int f = 0; f < it.compliance.length; f++)
             s.append(String.format(Locale.ROOT, " %s %.4e", fit.families().get(f).name().toLowerCase(Locale.ROOT), it.compliance[f]));
+        if (fit.fitsDamping()) s.append(String.format(Locale.ROOT, " damping %.4f/s", it.damping));
         out.println(s);
     }
 }

@@ -70,9 +70,9 @@ class StaticFitTest {
         for (double start : new double[] {0.1, 10}) {
             StaticFit fit = fit(observed, start);
             fit.run(10, null);
-            List<StaticFit.Iteration> h = fit.history();
+            List<FitIteration> h = fit.history();
             int within = -1;
-            for (StaticFit.Iteration it : h)
+            for (FitIteration it : h)
                 if (within < 0 && maxRelativeError(it.compliance) < 0.005) within = it.index;
             assertTrue(within >= 0 && within <= 10, "within 0.5 % of α* by iteration 10 from " + start + " α*; reached " + maxRelativeError(fit.last().compliance));
             assertTrue(maxRelativeError(fit.last().compliance) < 1e-6, "and it keeps going to the exact α*: " + maxRelativeError(fit.last().compliance));

@@ -43,6 +43,29 @@ class FitCommandTest {
         assertTrue(Files.size(dir.resolve("fit.png")) > 10_000, "the plot is written");
     }
 
+    /** A trajectory: 25 frames written, fitted from 0.7 × every value, damping included, back into a preset that loads. */
+    @Test
+    void aFolderOfFramesIsFittedDynamicallyDampingIncluded(@TempDir Path dir) throws Exception {
+        Path frames = dir.resolve("drape-motion");
+        assertEquals(0, run("fit", "--scene", "drape", "--make-observation", frames.toString(), "--frames", "25"), err.toString());
+        assertTrue(out.toString().contains("wrote 25 frames (0.50 s of drape"), out.toString());
+        assertTrue(Files.exists(frames.resolve("frame-0025.obj")));
+        assertEquals(0, run("fit", "--scene", "drape", "--observed", frames.toString(), "--start-factor", "0.7", "--out", dir.toString()), err.toString());
+        assertTrue(out.toString().contains("fitting structural, shear, bend, damping of drape (256 particles) to 25 frames"), out.toString());
+        Preset fitted = PresetLoader.load(dir.resolve("drape-fitted.json"));
+        Preset truth = PresetLoader.builtIn("drape");
+        for (ConstraintFamily f : new ConstraintFamily[] {ConstraintFamily.STRUCTURAL, ConstraintFamily.SHEAR, ConstraintFamily.BEND})
+            assertEquals(truth.families.get(f).compliance, fitted.families.get(f).compliance, 0.02 * truth.families.get(f).compliance, f + " α");
+        assertEquals(truth.solver.damping, fitted.solver.damping, 0.02 * truth.solver.damping, "damping");
+        assertTrue(Files.readString(dir.resolve("iterations.csv")).lines().findFirst().orElse("").endsWith(",damping_per_s,simulations"));
+        err.getBuffer().setLength(0);
+        assertEquals(2, run("fit", "--scene", "drape", "--observed", dir.resolve("drape-fitted.json").toString(), "--params", "damping"));
+        assertTrue(err.toString().contains("params names damping, which a rest shape does not depend on"), err.toString());
+        err.getBuffer().setLength(0);
+        assertEquals(2, run("fit", "--scene", "tablecloth", "--observed", frames.toString()));
+        assertTrue(err.toString().contains("vertices and scene tablecloth has"), err.toString());
+    }
+
     @Test
     void badInputIsAMessageAndExitCodeTwo(@TempDir Path dir) throws Exception {
         Path rope = dir.resolve("rope.obj");
@@ -54,7 +77,7 @@ class FitCommandTest {
         Path shape = dir.resolve("d.obj");
         assertEquals(0, run("fit", "--scene", "drape", "--make-observation", shape.toString()));
         assertEquals(2, run("fit", "--scene", "drape", "--observed", shape.toString(), "--params", "structural,wind"));
-        assertTrue(err.toString().contains("params must name structural, shear or bend, was wind"), err.toString());
+        assertTrue(err.toString().contains("params must name structural, shear, bend or (for a trajectory) damping, was wind"), err.toString());
         err.getBuffer().setLength(0);
         assertEquals(2, run("fit", "--scene", "curtain", "--observed", shape.toString(), "--params", "bend"));
         assertTrue(err.toString().contains("params names bend, which scene curtain does not have; it has structural"), err.toString());

@@ -1,0 +1,466 @@
+package xpbdcloth.fit;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import xpbdcloth.engine.ConstraintBlock;
+import xpbdcloth.engine.ConstraintFamily;
+import xpbdcloth.engine.ConstraintMode;
+import xpbdcloth.engine.ConstraintOrder;
+import xpbdcloth.engine.Particles;
+import xpbdcloth.engine.Simulation;
+import xpbdcloth.engine.SolverSettings;
+import xpbdcloth.engine.SolverType;
+
+/**
+ * A scene's XPBD trajectory as a function of its compliances and damping, and the gradient of a
+ * trajectory loss by reverse-mode differentiation of the substep loop as it ran.
+ *
+ * <p>Forward, per substep h (the engine's stages, {@code Simulation}): predict v₁ = v + h·g, p = x + h·v₁;
+ * n Gauss–Seidel sweeps, each constraint j in order
+ * <pre>
+ *   Δλ = (−C(p) − α̃ⱼλⱼ) / (Σᵢ wᵢ|∇ᵢC|² + α̃ⱼ),   pᵢ += wᵢ ∇ᵢC Δλ,   λⱼ += Δλ      (α̃ⱼ = αⱼ/h², λ = 0 per substep)
+ * </pre>
+ * then v' = (p − x)/h, v'' = v'·e^(−c·h), x = p. C and ∇C are each block's own {@code evaluate} and
+ * {@code gradient}, the functions its {@code project} is written with; the replay is checked against the
+ * engine's trajectory ({@link #replayGap}), because the engine's safety limits (a shear's trust region, a
+ * degenerate edge skipped) are not differentiated here.
+ *
+ * <p>Reverse, one projection (adjoints x̄ of p, λ̄ of λ; D = Σwᵢ|∇ᵢC|² + α̃, N = −C − α̃λ, Δλ = N/D):
+ * <pre>
+ *   Δλ̄ = λ̄ + Σᵢ wᵢ∇ᵢC·x̄ᵢ,   N̄ = Δλ̄/D,   D̄ = −Δλ̄·Δλ/D
+ *   x̄ ← x̄ − N̄·∇C + ∇²C·ḡ,    ḡᵢ = wᵢΔλ·x̄ᵢ + 2D̄·wᵢ∇ᵢC,    λ̄ ← λ̄ − N̄α̃,    θ̄ += (D̄ − N̄λ)·α̃
+ * </pre>
+ * where ∇²C·ḡ is the central difference of the block's own ∇C along ḡ (Richardson-extrapolated, the step
+ * shrunk until two levels agree: near a flat triangle bend ∇²C grows as 1/|d| and a fixed step would miss it).
+ * Predict, velocity update and damping are linear and reversed by hand.
+ *
+ * <p>Memory: the state (x, v) at the start of every frame (6 doubles per particle per frame, growing
+ * linearly with the frames: 12 KB a frame for a 16² cloth), the states at the starts of one frame's
+ * substeps, and one substep's tape (the particles' positions and λ before each projection, re-made from
+ * the substep's start when it is reversed). A frame is simulated three times per gradient: the pass that
+ * stores the checkpoints, the one that stores the substep starts, the taped one.
+ *
+ * <p>Parameters θ: ln s_f per fitted family (αⱼ = s_f·αⱼ⁰, the scene's αⱼ⁰), then ln(c/c⁰) for the damping
+ * rate c if it is fitted. Assumed: no contacts, attachments, scripted pins or external forces (refused),
+ * XPBD, Gauss–Seidel in the order built on one thread.
+ */
+final class TrajectoryAdjoint {
+    private final Particles scratch;
+    private final double[] x0, v0, w;
+    private final double h, gx, gy, gz, damping0;
+    private final int substeps, iterations, n;
+    private final ConstraintBlock[] blocks;
+    /** Parameter of each block (−1 when its family is not fitted) and the offset of its first λ. */
+    private final int[] parameterOf, lambdaOffset;
+    /** αⱼ⁰ per constraint, flat over the blocks. */
+    private final double[] alpha0;
+    final List<ConstraintFamily> families;
+    final boolean fitsDamping;
+    private final int parameters;
+    private final double fdStep;
+
+    // Working state, made once.
+    private final double[] v, prev, lambda, alphaTilde, tape, grad = new double[12], gPlus = new double[12], gMinus = new double[12],
+            hu = new double[12], huHalf = new double[12], saved = new double[12], gBar = new double[12];
+    private double decay, dampingRate;
+
+    TrajectoryAdjoint(Simulation sim, List<ConstraintFamily> families, boolean fitsDamping) {
+        SolverSettings s = sim.settings();
+        if (s.mode() != ConstraintMode.XPBD)
+            throw new IllegalArgumentException("mode must be XPBD for a fit (PBD's stiffness depends on the sweep count), was " + s.mode());
+        if (s.solver() != SolverType.GAUSS_SEIDEL || s.order() != ConstraintOrder.AS_BUILT)
+            throw new IllegalArgumentException("solver must be Gauss-Seidel in the order built on one thread for a dynamic fit, was " + s.solver() + ", " + s.order());
+        if (sim.colliderCount() > 0 || sim.selfCollision() != null)
+            throw new IllegalArgumentException("scene must have no colliders or self-collision for a dynamic fit (contacts are not differentiated), has "
+                    + sim.colliderCount() + " colliders" + (sim.selfCollision() != null ? " and self-collision" : ""));
+        if (!sim.forces().isEmpty() || sim.hasKinematics())
+            throw new IllegalArgumentException("scene must have no wind, forces or scripted pins for a dynamic fit, has "
+                    + sim.forces().size() + " forces" + (sim.hasKinematics() ? " and scripted motion" : ""));
+        int total = 0;
+        List<ConstraintBlock> used = new ArrayList<>();
+        for (ConstraintBlock b : sim.blocks()) {
+            if (b.count() == 0) continue;
+            if (b.family() == ConstraintFamily.TETHER)
+                throw new IllegalArgumentException("scene must have no tethers for a dynamic fit (an inequality is not differentiated), has " + b.count());
+            used.add(b);
+            total += b.count();
+        }
+        if (sim.constraintCount() != total)
+            throw new IllegalArgumentException("scene must have no attachments for a dynamic fit, has " + (sim.constraintCount() - total));
+        for (ConstraintFamily f : families)
+            if (used.stream().noneMatch(b -> b.family() == f))
+                throw new IllegalArgumentException("params names " + ClothEnergy.name(f) + ", which this scene does not have");
+        if (fitsDamping && !(s.damping() > 0))
+            throw new IllegalArgumentException("solver.damping must be > 0 to fit damping (it is fitted as a factor on the scene's rate), was " + s.damping());
+        if (families.isEmpty() && !fitsDamping) throw new IllegalArgumentException("params must name at least one parameter, was empty");
+        this.families = List.copyOf(families);
+        this.fitsDamping = fitsDamping;
+        parameters = families.size() + (fitsDamping ? 1 : 0);
+        blocks = used.toArray(new ConstraintBlock[0]);
+        parameterOf = new int[blocks.length];
+        lambdaOffset = new int[blocks.length];
+        alpha0 = new double[total];
+        int tapeLength = 0;
+        for (int k = 0, j = 0; k < blocks.length; k++) {
+            ConstraintBlock b = blocks[k];
+            parameterOf[k] = families.indexOf(b.family());
+            lambdaOffset[k] = j;
+            for (int i = 0; i < b.count(); i++, j++) {
+                alpha0[j] = b.compliance(i);
+                if (!(alpha0[j] > 0))
+                    throw new IllegalArgumentException("families." + ClothEnergy.name(b.family()) + ".compliance must be > 0 for a fit (a hard constraint has no compliance to scale), was " + alpha0[j]);
+            }
+            tapeLength += b.count() * (3 * b.arity() + 1);
+        }
+        Particles p = sim.particles();
+        n = p.count();
+        scratch = new Particles(n);
+        scratch.copyFrom(p);
+        x0 = p.positions().clone();
+        v0 = new double[3 * n];
+        w = new double[n];
+        for (int i = 0; i < n; i++) {
+            v0[3 * i] = p.vx(i); v0[3 * i + 1] = p.vy(i); v0[3 * i + 2] = p.vz(i);
+            w[i] = p.inverseMass(i);
+        }
+        substeps = s.substeps();
+        iterations = s.iterations();
+        h = s.timestep() / substeps;
+        gx = s.gravityX(); gy = s.gravityY(); gz = s.gravityZ();
+        damping0 = s.damping();
+        v = new double[3 * n];
+        prev = new double[3 * n];
+        lambda = new double[total];
+        alphaTilde = new double[total];
+        tape = new double[iterations * tapeLength];
+        fdStep = 1e-5 * shortestEdge();
+    }
+
+    int parameters() { return parameters; }
+    int particles() { return n; }
+    double timestep() { return h * substeps; }
+    boolean isPinned(int i) { return w[i] == 0; }
+    double[] initialPositions() { return x0.clone(); }
+
+    /** α per fitted family and, last, the damping rate (1/s) at θ, for reports. */
+    double[] values(double[] theta) {
+        double[] out = new double[parameters];
+        for (int f = 0; f < families.size(); f++) out[f] = familyCompliance(f) * Math.exp(theta[f]);
+        if (fitsDamping) out[parameters - 1] = damping0 * Math.exp(theta[parameters - 1]);
+        return out;
+    }
+
+    /** The scene's α of family f (its first constraint's, for a family with per-constraint values). */
+    private double familyCompliance(int f) {
+        for (int k = 0; k < blocks.length; k++) if (parameterOf[k] == f) return alpha0[lambdaOffset[k]];
+        throw new IllegalStateException();
+    }
+
+    private void load(double[] theta) {
+        for (int k = 0; k < blocks.length; k++) {
+            double scale = parameterOf[k] < 0 ? 1 : Math.exp(theta[parameterOf[k]]);
+            for (int i = 0, j = lambdaOffset[k]; i < blocks[k].count(); i++, j++) alphaTilde[j] = alpha0[j] * scale / (h * h);
+        }
+        dampingRate = fitsDamping ? damping0 * Math.exp(theta[parameters - 1]) : damping0;
+        decay = Math.exp(-dampingRate * h);
+    }
+
+    /** Positions after each of {@code frames} steps at θ, [frame][3·particle + axis]. */
+    double[][] simulate(double[] theta, int frames) {
+        load(theta);
+        double[] x = scratch.positions();
+        System.arraycopy(x0, 0, x, 0, x.length);
+        System.arraycopy(v0, 0, v, 0, v.length);
+        double[][] out = new double[frames][];
+        for (int f = 0; f < frames; f++) {
+            for (int s = 0; s < substeps; s++) substep(false);
+            out[f] = x.clone();
+        }
+        return out;
+    }
+
+    /**
+     * The largest distance (m) of a particle between the engine's trajectory and this replay's at the
+     * scene's own parameters, over {@code frames} steps of {@code sim} (which it advances: pass a fresh one).
+     */
+    double replayGap(Simulation sim, int frames) {
+        double[][] replay = simulate(new double[parameters], frames);
+        double gap = 0;
+        for (int f = 0; f < frames; f++) {
+            sim.step();
+            double[] x = sim.particles().positions();
+            for (int i = 0; i < n; i++)
+                gap = Math.max(gap, Math.sqrt(sq(x[3 * i] - replay[f][3 * i]) + sq(x[3 * i + 1] - replay[f][3 * i + 1]) + sq(x[3 * i + 2] - replay[f][3 * i + 2])));
+        }
+        return gap;
+    }
+
+    /** L = ½ Σ_frames Σ_free |x − x̂|² at θ. */
+    double loss(double[] theta, double[][] observed) {
+        double[][] x = simulate(theta, observed.length);
+        double l = 0;
+        for (int f = 0; f < observed.length; f++) l += frameLoss(x[f], observed[f]);
+        return l;
+    }
+
+    private double frameLoss(double[] x, double[] observed) {
+        double l = 0;
+        for (int i = 0; i < n; i++) {
+            if (w[i] == 0) continue;
+            for (int a = 0; a < 3; a++) l += 0.5 * sq(x[3 * i + a] - observed[3 * i + a]);
+        }
+        return l;
+    }
+
+    /** ∂L/∂θ by the adjoint of every substep, frames reversed from their checkpoints; also returns L in {@code lossOut[0]}. */
+    double[] gradient(double[] theta, double[][] observed, double[] lossOut) {
+        int frames = observed.length;
+        load(theta);
+        double[] x = scratch.positions();
+        // Pass 1: the checkpoints (the state at each frame's start; checkX[f + 1] is where frame f ends) and the loss.
+        double[][] checkX = new double[frames + 1][], checkV = new double[frames][];
+        System.arraycopy(x0, 0, x, 0, x.length);
+        System.arraycopy(v0, 0, v, 0, v.length);
+        double l = 0;
+        for (int f = 0; f < frames; f++) {
+            checkX[f] = x.clone();
+            checkV[f] = v.clone();
+            for (int s = 0; s < substeps; s++) substep(false);
+            l += frameLoss(x, observed[f]);
+        }
+        checkX[frames] = x.clone();
+        if (lossOut != null) lossOut[0] = l;
+        double[] xBar = new double[3 * n], vBar = new double[3 * n], thetaBar = new double[parameters];
+        double[][] subX = new double[substeps][3 * n], subV = new double[substeps][3 * n];
+        for (int f = frames - 1; f >= 0; f--) {
+            for (int i = 0; i < n; i++)
+                if (w[i] != 0) for (int a = 0; a < 3; a++) xBar[3 * i + a] += checkX[f + 1][3 * i + a] - observed[f][3 * i + a];
+            // Pass 2: the substeps' starts within this frame.
+            System.arraycopy(checkX[f], 0, x, 0, x.length);
+            System.arraycopy(checkV[f], 0, v, 0, v.length);
+            for (int s = 0; s < substeps; s++) {
+                System.arraycopy(x, 0, subX[s], 0, x.length);
+                System.arraycopy(v, 0, subV[s], 0, v.length);
+                substep(false);
+            }
+            // Pass 3: each substep taped from its start, then reversed.
+            for (int s = substeps - 1; s >= 0; s--) {
+                System.arraycopy(subX[s], 0, x, 0, x.length);
+                System.arraycopy(subV[s], 0, v, 0, v.length);
+                substep(true);
+                reverseSubstep(xBar, vBar, thetaBar);
+            }
+        }
+        return thetaBar;
+    }
+
+    /** One substep on (scratch positions, v), the projections' inputs recorded when {@code record}. */
+    private void substep(boolean record) {
+        final double[] x = scratch.positions();
+        for (int i = 0; i < n; i++) {
+            int k = 3 * i;
+            prev[k] = x[k]; prev[k + 1] = x[k + 1]; prev[k + 2] = x[k + 2];
+            if (w[i] == 0) continue;
+            v[k] += h * gx; v[k + 1] += h * gy; v[k + 2] += h * gz;
+            x[k] += h * v[k]; x[k + 1] += h * v[k + 1]; x[k + 2] += h * v[k + 2];
+        }
+        Arrays.fill(lambda, 0);
+        int t = 0;
+        for (int it = 0; it < iterations; it++)
+            for (int k = 0; k < blocks.length; k++) {
+                ConstraintBlock b = blocks[k];
+                int arity = b.arity();
+                for (int i = 0, j = lambdaOffset[k]; i < b.count(); i++, j++) {
+                    if (record) {
+                        for (int q = 0; q < arity; q++) {
+                            int c = 3 * b.particle(i, q);
+                            tape[t++] = x[c]; tape[t++] = x[c + 1]; tape[t++] = x[c + 2];
+                        }
+                        tape[t++] = lambda[j];
+                    }
+                    project(b, i, j);
+                }
+            }
+        final double inv = 1.0 / h;
+        for (int c = 0; c < 3 * n; c++) v[c] = (x[c] - prev[c]) * inv;
+        for (int i = 0; i < n; i++)
+            if (w[i] != 0) { v[3 * i] *= decay; v[3 * i + 1] *= decay; v[3 * i + 2] *= decay; }
+    }
+
+    /** The XPBD projection of constraint i of b (flat index j), from its C and ∇C. */
+    private void project(ConstraintBlock b, int i, int j) {
+        double c = b.evaluate(i, scratch);
+        b.gradient(i, scratch, grad);
+        int arity = b.arity();
+        double wg = 0;
+        for (int q = 0; q < arity; q++) {
+            double wq = w[b.particle(i, q)];
+            wg += wq * (sq(grad[3 * q]) + sq(grad[3 * q + 1]) + sq(grad[3 * q + 2]));
+        }
+        double a = alphaTilde[j], denominator = wg + a;
+        if (denominator <= 0) return;
+        double dLambda = (-c - a * lambda[j]) / denominator;
+        double[] x = scratch.positions();
+        for (int q = 0; q < arity; q++) {
+            int p = b.particle(i, q);
+            double s = w[p] * dLambda;
+            x[3 * p] += s * grad[3 * q]; x[3 * p + 1] += s * grad[3 * q + 1]; x[3 * p + 2] += s * grad[3 * q + 2];
+        }
+        lambda[j] += dLambda;
+    }
+
+    /**
+     * Turns (x̄, v̄), the adjoints of the substep's end state, into those of its start, adding ∂/∂θ to
+     * thetaBar. Needs the substep just taped: scratch positions at its end, prev at its start, v at its end.
+     */
+    private void reverseSubstep(double[] xBar, double[] vBar, double[] thetaBar) {
+        final double[] x = scratch.positions();
+        // Damping v'' = v'·e^(−ch) on free particles; v' = (x_end − prev)/h.
+        for (int i = 0; i < n; i++) {
+            if (w[i] == 0) continue;
+            for (int a = 0; a < 3; a++) {
+                int c = 3 * i + a;
+                if (fitsDamping) thetaBar[parameters - 1] += vBar[c] * v[c] * (-h * dampingRate);
+                vBar[c] *= decay;
+            }
+        }
+        // v' = (p − prev)/h: p̄ = x̄ + v̄/h, and prev̄ = −v̄/h (kept in vBar until the predict).
+        final double inv = 1.0 / h;
+        for (int c = 0; c < 3 * n; c++) {
+            xBar[c] += vBar[c] * inv;
+            vBar[c] = -vBar[c] * inv; // now prev̄
+        }
+        // The sweeps, last projection first; λ̄ starts at 0 (λ's final value is not an output).
+        Arrays.fill(lambda, 0); // reused as λ̄
+        int t = tape.length;
+        for (int it = iterations - 1; it >= 0; it--)
+            for (int k = blocks.length - 1; k >= 0; k--) {
+                ConstraintBlock b = blocks[k];
+                int arity = b.arity(), record = 3 * arity + 1;
+                for (int i = b.count() - 1, j = lambdaOffset[k] + i; i >= 0; i--, j--) {
+                    t -= record;
+                    reverseProjection(k, i, j, t, xBar, thetaBar);
+                }
+            }
+        // Predict: p = x + h(v + hg) on free particles, p = x on pinned ones, prev = x.
+        for (int i = 0; i < n; i++)
+            for (int a = 0; a < 3; a++) {
+                int c = 3 * i + a;
+                double pBar = xBar[c];
+                xBar[c] = pBar + vBar[c];
+                vBar[c] = w[i] == 0 ? 0 : h * pBar;
+            }
+    }
+
+    /** The adjoint of one projection (constraint i of block k, flat index j, its inputs at tape[t…]). */
+    private void reverseProjection(int k, int i, int j, int t, double[] xBar, double[] thetaBar) {
+        final ConstraintBlock b = blocks[k];
+        final double[] x = scratch.positions();
+        int arity = b.arity();
+        for (int q = 0; q < arity; q++) {
+            int c = 3 * b.particle(i, q);
+            x[c] = tape[t + 3 * q]; x[c + 1] = tape[t + 3 * q + 1]; x[c + 2] = tape[t + 3 * q + 2];
+        }
+        double lambdaBefore = tape[t + 3 * arity];
+        double cValue = b.evaluate(i, scratch);
+        b.gradient(i, scratch, grad);
+        double wg = 0;
+        for (int q = 0; q < arity; q++) {
+            double wq = w[b.particle(i, q)];
+            wg += wq * (sq(grad[3 * q]) + sq(grad[3 * q + 1]) + sq(grad[3 * q + 2]));
+        }
+        double a = alphaTilde[j], denominator = wg + a;
+        if (denominator <= 0) return;
+        double dLambda = (-cValue - a * lambdaBefore) / denominator;
+        double dLambdaBar = lambda[j];
+        for (int q = 0; q < arity; q++) {
+            int p = b.particle(i, q);
+            double wq = w[p];
+            for (int e = 0; e < 3; e++) dLambdaBar += wq * grad[3 * q + e] * xBar[3 * p + e];
+        }
+        double nBar = dLambdaBar / denominator, dBar = -dLambdaBar * dLambda / denominator;
+        double gNorm = 0;
+        for (int q = 0; q < arity; q++) {
+            int p = b.particle(i, q);
+            double wq = w[p];
+            for (int e = 0; e < 3; e++) {
+                gBar[3 * q + e] = wq * dLambda * xBar[3 * p + e] + 2 * dBar * wq * grad[3 * q + e];
+                gNorm += sq(gBar[3 * q + e]);
+            }
+        }
+        lambda[j] -= nBar * a;
+        int param = parameterOf[k];
+        if (param >= 0) thetaBar[param] += (dBar - nBar * lambdaBefore) * a;
+        if (gNorm > 0) hessianTimes(b, i, gBar, Math.sqrt(gNorm));
+        for (int q = 0; q < arity; q++) {
+            int p = b.particle(i, q);
+            for (int e = 0; e < 3; e++) xBar[3 * p + e] += -nBar * grad[3 * q + e] + (gNorm > 0 ? hu[3 * q + e] : 0);
+        }
+    }
+
+    /**
+     * hu = ∇²C·u for constraint i of b at the scratch positions, by central differences of ∇C along
+     * u/|u|: steps ε and ε/2 combined by Richardson (error O(ε⁴)), ε quartered until the two agree to 1e-4
+     * (where ∇²C varies on a scale shorter than ε, as near a flat bend). Asking them to agree closer drives ε
+     * into round-off: at 1e-8 the gradient of a 1 s trajectory was off by 1e-3, at 1e-4 by 1e-7.
+     */
+    private void hessianTimes(ConstraintBlock b, int i, double[] u, double norm) {
+        int m = 3 * b.arity();
+        double eps = fdStep;
+        for (int attempt = 0; ; attempt++) {
+            centralDifference(b, i, u, norm, eps, hu);
+            centralDifference(b, i, u, norm, eps / 2, huHalf);
+            double diff = 0, size = 0;
+            for (int e = 0; e < m; e++) {
+                diff = Math.max(diff, Math.abs(hu[e] - huHalf[e]));
+                size = Math.max(size, Math.abs(huHalf[e]));
+            }
+            if (diff <= 1e-4 * size || attempt == 8) {
+                for (int e = 0; e < m; e++) hu[e] = huHalf[e] + (huHalf[e] - hu[e]) / 3;
+                return;
+            }
+            eps /= 4;
+        }
+    }
+
+    /** out = (∇C(x + εû) − ∇C(x − εû))/(2ε)·|u| ≈ ∇²C·u, û = u/|u|, the positions restored after. */
+    private void centralDifference(ConstraintBlock b, int i, double[] u, double norm, double eps, double[] out) {
+        final double[] x = scratch.positions();
+        int arity = b.arity();
+        for (int q = 0; q < arity; q++) {
+            int c = 3 * b.particle(i, q);
+            saved[3 * q] = x[c]; saved[3 * q + 1] = x[c + 1]; saved[3 * q + 2] = x[c + 2];
+        }
+        double step = eps / norm;
+        for (int q = 0; q < arity; q++) {
+            int c = 3 * b.particle(i, q);
+            for (int e = 0; e < 3; e++) x[c + e] = saved[3 * q + e] + step * u[3 * q + e];
+        }
+        b.gradient(i, scratch, gPlus);
+        for (int q = 0; q < arity; q++) {
+            int c = 3 * b.particle(i, q);
+            for (int e = 0; e < 3; e++) x[c + e] = saved[3 * q + e] - step * u[3 * q + e];
+        }
+        b.gradient(i, scratch, gMinus);
+        for (int q = 0; q < arity; q++) {
+            int c = 3 * b.particle(i, q);
+            for (int e = 0; e < 3; e++) x[c + e] = saved[3 * q + e];
+        }
+        for (int e = 0; e < 3 * arity; e++) out[e] = (gPlus[e] - gMinus[e]) / (2 * step);
+    }
+
+    private double shortestEdge() {
+        double shortest = Double.POSITIVE_INFINITY;
+        for (ConstraintBlock b : blocks)
+            for (int i = 0; i < b.count(); i++)
+                for (int q = 1; q < b.arity(); q++) {
+                    int u = 3 * b.particle(i, 0), p = 3 * b.particle(i, q);
+                    double d = Math.sqrt(sq(x0[u] - x0[p]) + sq(x0[u + 1] - x0[p + 1]) + sq(x0[u + 2] - x0[p + 2]));
+                    if (d > 0) shortest = Math.min(shortest, d);
+                }
+        return Double.isFinite(shortest) ? shortest : 1e-2;
+    }
+
+    private static double sq(double v) { return v * v; }
+}
