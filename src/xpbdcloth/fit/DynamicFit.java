@@ -83,6 +83,12 @@ public final class DynamicFit implements MaterialFit {
     @Override public String solvesName() { return "simulations"; }
     @Override public List<FitIteration> history() { return Collections.unmodifiableList(history); }
     @Override public boolean converged() { return converged; }
+    @Override public double[] scale() {
+        double[] s = new double[adjoint.families.size()];
+        for (int f = 0; f < s.length; f++) s[f] = Math.exp(theta[f]);
+        return s;
+    }
+
     /** Frames observed, each one step of the scene's dt. */
     public int frames() { return observed.length; }
 

@@ -12,6 +12,9 @@ import org.knowm.xchart.BitmapEncoder;
 import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYChartBuilder;
 import xpbdcloth.engine.ConstraintFamily;
+import xpbdcloth.engine.OrthotropicMaterial;
+import xpbdcloth.fabric.Fabric;
+import xpbdcloth.scene.Preset;
 
 /** What a fit leaves behind: the iterations as CSV and PNG, and the fitted compliances as a preset. */
 public final class FitFiles {
@@ -62,19 +65,27 @@ public final class FitFiles {
     }
 
     /**
-     * The preset's own JSON with each fitted family's compliance (and the solver's damping, if fitted)
-     * replaced, renamed {@code name}: a file the sketch and every command load as they load the original.
+     * The preset's own JSON with each fitted spring family's compliance, a fitted fabric's moduli and the
+     * solver's damping (if fitted) replaced, renamed {@code name}: a file the sketch and every command load
+     * as they load the original. A fabric's membrane α scales as 1/(E₁, E₂, G₁₂) (ν₁₂ unchanged) and its
+     * dihedral α as 1/B, so the fitted factor divides those; a catalogue fabric is written out as its
+     * moduli, with its areal density moved to the cloth.
      */
-    public static void writePreset(Path file, String presetJson, String name, MaterialFit fit, String observed) throws IOException {
+    public static void writePreset(Path file, Preset preset, String presetJson, String name, MaterialFit fit, String observed) throws IOException {
         ObjectMapper json = new ObjectMapper();
         ObjectNode root = (ObjectNode) json.readTree(presetJson);
         root.put("name", name);
         StringBuilder fitted = new StringBuilder();
-        double[] alpha = fit.compliance();
+        double[] alpha = fit.compliance(), scale = fit.scale();
+        double membraneScale = 1, dihedralScale = 1;
         for (int f = 0; f < alpha.length; f++) {
-            ((ObjectNode) root.with("families").with(name(fit.families().get(f)))).put("compliance", alpha[f]);
-            fitted.append(f == 0 ? "" : ", ").append(name(fit.families().get(f))).append(String.format(Locale.ROOT, " %.4g m/N", alpha[f]));
+            ConstraintFamily family = fit.families().get(f);
+            if (family == ConstraintFamily.MEMBRANE) membraneScale = scale[f];
+            else if (family == ConstraintFamily.DIHEDRAL) dihedralScale = scale[f];
+            else ((ObjectNode) root.with("families").with(name(family))).put("compliance", alpha[f]);
+            fitted.append(f == 0 ? "" : ", ").append(name(family)).append(String.format(Locale.ROOT, " %.4g m/N", alpha[f]));
         }
+        if (membraneScale != 1 || dihedralScale != 1) writeFabric(root, preset, membraneScale, dihedralScale);
         if (fit.fitsDamping()) {
             double c = fit.last().damping;
             ((ObjectNode) root.with("solver")).put("damping", c);
@@ -83,6 +94,22 @@ public final class FitFiles {
         root.put("description", String.format(Locale.ROOT, "Fitted by xpbd-cloth fit to %s (RMS %.3f mm after %d iterations): %s. From: %s",
                 observed, fit.last().rms * 1e3, fit.last().index, fitted, root.path("description").asText("")));
         Files.writeString(file, json.writerWithDefaultPrettyPrinter().writeValueAsString(root) + "\n");
+    }
+
+    private static void writeFabric(ObjectNode root, Preset preset, double membraneScale, double dihedralScale) {
+        Fabric fabric = preset.fabric.fabric;
+        ObjectNode node = root.with("fabric");
+        if (node.has("catalogue")) {
+            node.remove("catalogue");
+            ((ObjectNode) root.with("cloth")).put("arealDensity", fabric.arealDensity);
+        }
+        OrthotropicMaterial m = fabric.membrane;
+        node.put("name", (fabric.name.isEmpty() ? "fabric" : fabric.name) + " (fitted)");
+        node.put("warpModulus", m.warpModulus / membraneScale);
+        node.put("weftModulus", m.weftModulus / membraneScale);
+        node.put("poisson", m.poisson);
+        node.put("shearModulus", m.shearModulus / membraneScale);
+        node.put("bendingStiffness", fabric.bendingStiffness / dihedralScale);
     }
 
     private static String num(double v) { return String.format(Locale.ROOT, "%.9g", v); }

@@ -21,6 +21,11 @@ public interface MaterialFit {
     default FitIteration last() { return history().get(history().size() - 1); }
     /** α per fitted family now. */
     default double[] compliance() { return last().compliance.clone(); }
+    /**
+     * The factor s_f each fitted family's compliances were multiplied by (α = s_f·α⁰, the scene's α⁰):
+     * for a family built from moduli (a fabric's membrane, its dihedral bending) the moduli are divided by it.
+     */
+    double[] scale();
 
     /** Runs until converged or {@code maxIterations} iterations; true if it converged. */
     default boolean run(int maxIterations, Consumer<FitIteration> progress) {

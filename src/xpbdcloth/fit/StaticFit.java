@@ -73,6 +73,11 @@ public final class StaticFit implements MaterialFit {
     @Override public List<FitIteration> history() { return Collections.unmodifiableList(history); }
     @Override public boolean converged() { return converged; }
     @Override public double[] compliance() { return compliance(theta); }
+    @Override public double[] scale() {
+        double[] s = new double[theta.length];
+        for (int f = 0; f < s.length; f++) s[f] = Math.exp(theta[f]);
+        return s;
+    }
 
     /** α per fitted family at θ: the scene's α times e^θ. */
     private double[] compliance(double[] th) {

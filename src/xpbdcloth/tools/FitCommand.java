@@ -9,6 +9,7 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
+import xpbdcloth.engine.ConstraintBlock;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.fit.FitException;
 import xpbdcloth.fit.FitFiles;
@@ -33,8 +34,13 @@ import xpbdcloth.scene.Scene;
                 "With --make-observation FILE it instead settles the scene, polishes it to its exact equilibrium and writes that shape (plus --noise-mm of noise);"
                 + " with --make-observation DIR --frames N it writes the scene's first N steps."})
 final class FitCommand implements Callable<Integer> {
-    /** The families a preset gives one compliance each, so the fitted preset can say what was fitted. */
-    static final List<ConstraintFamily> FITTABLE = List.of(ConstraintFamily.STRUCTURAL, ConstraintFamily.SHEAR, ConstraintFamily.BEND);
+    /**
+     * The families a fitted preset can say: a spring family's compliance, a fabric's membrane moduli and its
+     * bending stiffness (each fitted as one factor on all its constraints' compliances).
+     */
+    static final List<ConstraintFamily> FITTABLE = List.of(ConstraintFamily.STRUCTURAL, ConstraintFamily.SHEAR, ConstraintFamily.BEND,
+            ConstraintFamily.MEMBRANE, ConstraintFamily.DIHEDRAL);
+    static final String FITTABLE_NAMES = "structural, shear, bend, membrane, dihedral";
 
     @Option(names = "--scene", description = "built-in scene or preset file", defaultValue = "drape")
     String scene;
@@ -42,7 +48,7 @@ final class FitCommand implements Callable<Integer> {
     @Option(names = "--observed", description = "the observed shape, an OBJ with the scene's vertices in the scene's order; or a folder of such OBJs, one per step (a trajectory)")
     File observed;
 
-    @Option(names = "--params", split = ",", description = "what to fit, of structural, shear, bend and (for a trajectory) damping (default: the families the scene has, and its damping if it has one and a trajectory is fitted)")
+    @Option(names = "--params", split = ",", description = "what to fit, of structural, shear, bend, membrane, dihedral (a fabric's moduli) and (for a trajectory) damping (default: the families the scene has, and its damping if it has one and a trajectory is fitted)")
     List<String> params;
 
     @Option(names = "--noise-mm", description = "with --make-observation: Gaussian noise (mm, per coordinate) added to every vertex; with --observed: the noise the observation has, to judge the residual", defaultValue = "0")
@@ -91,8 +97,8 @@ final class FitCommand implements Callable<Integer> {
         if (makeObservation != null) return frames > 0 ? makeTrajectory(sc) : makeObservation(sc);
         boolean dynamic = Files.isDirectory(observed.toPath());
         boolean fitsDamping = fitsDamping(preset, dynamic);
-        List<ConstraintFamily> families = families(preset, dynamic);
-        if (families.isEmpty() && !fitsDamping) throw new IllegalArgumentException("params must name at least one of structural, shear, bend" + (dynamic ? ", damping" : "") + ", was empty");
+        List<ConstraintFamily> families = families(preset, present(sc), dynamic);
+        if (families.isEmpty() && !fitsDamping) throw new IllegalArgumentException("params must name at least one of " + FITTABLE_NAMES + (dynamic ? ", damping" : "") + ", was empty");
         long t0 = System.nanoTime();
         MaterialFit fit;
         String what = names(families) + (fitsDamping ? (families.isEmpty() ? "" : ", ") + "damping" : "");
@@ -114,7 +120,7 @@ final class FitCommand implements Callable<Integer> {
         Path folder = outFolder != null ? outFolder.toPath() : Path.of("build", "fit", preset.name);
         Files.createDirectories(folder);
         Path json = folder.resolve(preset.name + "-fitted.json");
-        FitFiles.writePreset(json, PresetLoader.text(scene), preset.name + "-fitted", fit, observed.getName());
+        FitFiles.writePreset(json, preset, PresetLoader.text(scene), preset.name + "-fitted", fit, observed.getName());
         FitFiles.writeCsv(folder.resolve("iterations.csv"), fit);
         FitFiles.writePng(folder.resolve("fit.png"), fit);
         FitIteration last = fit.last();
@@ -156,19 +162,26 @@ final class FitCommand implements Callable<Integer> {
         return named;
     }
 
-    private List<ConstraintFamily> families(Preset preset, boolean dynamic) {
+    /** The fittable families the scene's cloth has, in the order it builds them. */
+    private static List<ConstraintFamily> present(Scene sc) {
         List<ConstraintFamily> out = new ArrayList<>();
+        for (ConstraintBlock b : sc.simulation().blocks())
+            if (b.count() > 0 && FITTABLE.contains(b.family()) && !out.contains(b.family())) out.add(b.family());
+        return out;
+    }
+
+    private List<ConstraintFamily> families(Preset preset, List<ConstraintFamily> present, boolean dynamic) {
         if (params == null) {
-            for (ConstraintFamily f : FITTABLE) if (preset.families.containsKey(f)) out.add(f);
-            if (out.isEmpty()) throw new IllegalArgumentException("params: scene " + preset.name + " has none of structural, shear, bend to fit");
-            return out;
+            if (present.isEmpty()) throw new IllegalArgumentException("params: scene " + preset.name + " has none of " + FITTABLE_NAMES + " to fit");
+            return present;
         }
+        List<ConstraintFamily> out = new ArrayList<>();
         for (String p : params) {
             if (dynamic && p.trim().equalsIgnoreCase("damping")) continue;
             ConstraintFamily f = FITTABLE.stream().filter(x -> x.name().equalsIgnoreCase(p.trim())).findFirst()
-                    .orElseThrow(() -> new IllegalArgumentException("params must name structural, shear, bend" + (dynamic ? " or damping" : " or (for a trajectory) damping") + ", was " + p));
-            if (!preset.families.containsKey(f))
-                throw new IllegalArgumentException("params names " + p + ", which scene " + preset.name + " does not have; it has " + names(new ArrayList<>(preset.families.keySet())));
+                    .orElseThrow(() -> new IllegalArgumentException("params must name " + FITTABLE_NAMES + (dynamic ? " or damping" : " or (for a trajectory) damping") + ", was " + p));
+            if (!present.contains(f))
+                throw new IllegalArgumentException("params names " + p + ", which scene " + preset.name + " does not have; it has " + names(present));
             if (!out.contains(f)) out.add(f);
         }
         return out;

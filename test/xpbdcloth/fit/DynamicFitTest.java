@@ -94,6 +94,27 @@ class DynamicFitTest {
         assertTrue(last.rms < 1e-9, "the trajectory reproduced: RMS " + last.rms + " m");
     }
 
+    /** The same adjoint through a fabric's blocks: membrane rows (three particles) and dihedral hinges (four). */
+    @Test
+    void theAdjointGradientHoldsThroughAFabricsMembraneAndDihedralBlocks() {
+        Scene denim = Scene.of(xpbdcloth.scene.PresetLoader.parse("denim-drape.json", FitScenes.DENIM_DRAPE));
+        List<ConstraintFamily> fabric = List.of(ConstraintFamily.MEMBRANE, ConstraintFamily.DIHEDRAL);
+        TrajectoryAdjoint adjoint = new TrajectoryAdjoint(denim.simulation(), fabric, true);
+        double[][] obs = Trajectory.simulate(Scene.of(denim.preset()), 25, 0, 1);
+        assertTrue(adjoint.replayGap(Scene.of(denim.preset()).simulation(), 25) < 1e-10);
+        double[] theta = {Math.log(0.5), Math.log(2), Math.log(1.5)};
+        double[] g = adjoint.gradient(theta, obs, null);
+        for (int p = 0; p < theta.length; p++) {
+            double e = 1e-4;
+            double[] plus = theta.clone(), minus = theta.clone();
+            plus[p] += e;
+            minus[p] -= e;
+            double fd = (adjoint.loss(plus, obs) - adjoint.loss(minus, obs)) / (2 * e);
+            assertTrue(Math.abs(fd) > 1e-9, "parameter " + p + " moves the loss: " + fd);
+            assertEquals(fd, g[p], 1e-4 * Math.abs(fd), "parameter " + p + ": adjoint " + g[p] + ", central difference " + fd);
+        }
+    }
+
     @Test
     void scenesItCannotDifferentiateAreRefusedByName() {
         assertTrue(assertThrows(IllegalArgumentException.class, () -> new TrajectoryAdjoint(Scene.builtIn("tablecloth").simulation(), ALL, false))
