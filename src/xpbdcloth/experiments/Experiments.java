@@ -27,6 +27,7 @@ public final class Experiments implements Callable<Integer> {
         e.add(new GlobalSolverComparison());
         e.add(new MeshIndependence());
         e.add(new FitOnceSimulateAnywhere());
+        e.add(new DynamicFitRecovery());
         return e;
     }
 
