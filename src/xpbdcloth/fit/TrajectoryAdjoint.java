@@ -288,17 +288,22 @@ final class TrajectoryAdjoint {
             if (w[i] != 0) { v[3 * i] *= decay; v[3 * i + 1] *= decay; v[3 * i + 2] *= decay; }
     }
 
-    /** The XPBD projection of constraint i of b (flat index j), from its C and ∇C. */
-    private void project(ConstraintBlock b, int i, int j) {
-        double c = b.evaluate(i, scratch);
+    /** ∇C of constraint i of b at the scratch positions into {@link #grad}; returns Σᵢ wᵢ|∇ᵢC|². */
+    private double gradientAndWeight(ConstraintBlock b, int i) {
         b.gradient(i, scratch, grad);
-        int arity = b.arity();
         double wg = 0;
-        for (int q = 0; q < arity; q++) {
+        for (int q = 0; q < b.arity(); q++) {
             double wq = w[b.particle(i, q)];
             wg += wq * (sq(grad[3 * q]) + sq(grad[3 * q + 1]) + sq(grad[3 * q + 2]));
         }
-        double a = alphaTilde[j], denominator = wg + a;
+        return wg;
+    }
+
+    /** The XPBD projection of constraint i of b (flat index j), from its C and ∇C. */
+    private void project(ConstraintBlock b, int i, int j) {
+        double c = b.evaluate(i, scratch);
+        int arity = b.arity();
+        double a = alphaTilde[j], denominator = gradientAndWeight(b, i) + a;
         if (denominator <= 0) return;
         double dLambda = (-c - a * lambda[j]) / denominator;
         double[] x = scratch.positions();
@@ -364,13 +369,7 @@ final class TrajectoryAdjoint {
         }
         double lambdaBefore = tape[t + 3 * arity];
         double cValue = b.evaluate(i, scratch);
-        b.gradient(i, scratch, grad);
-        double wg = 0;
-        for (int q = 0; q < arity; q++) {
-            double wq = w[b.particle(i, q)];
-            wg += wq * (sq(grad[3 * q]) + sq(grad[3 * q + 1]) + sq(grad[3 * q + 2]));
-        }
-        double a = alphaTilde[j], denominator = wg + a;
+        double a = alphaTilde[j], denominator = gradientAndWeight(b, i) + a;
         if (denominator <= 0) return;
         double dLambda = (-cValue - a * lambdaBefore) / denominator;
         double dLambdaBar = lambda[j];
