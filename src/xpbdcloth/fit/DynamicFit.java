@@ -15,7 +15,7 @@ import xpbdcloth.engine.Simulation;
  *   step   BFGS on θ = (ln s_f…, ln c/c⁰), Armijo backtracking, each component of a step at most 3
  * </pre>
  * Why BFGS and not Gauss–Newton as the static fit: reverse mode gives Jᵀr, the whole gradient, for the
- * price of about three simulations, but not J itself (that would be one reverse pass per observed
+ * price of about nine simulations (three forward passes and the reverse one), but not J itself (that would be one reverse pass per observed
  * coordinate); with four parameters BFGS rebuilds their curvature from gradients in a few steps.
  * Differentiated: the trajectory as the solver ran it (its fixed sweep count, not a converged solve),
  * so the fit recovers the parameters of this simulator at these settings; the observation is taken at the
@@ -103,12 +103,6 @@ public final class DynamicFit implements MaterialFit {
         simulations++;
         return adjoint.loss(th, observed);
     }
-
-    /** ∂L/∂θ at the current θ (for checks). */
-    double[] gradient() { return gradient.clone(); }
-    double[] theta() { return theta.clone(); }
-    /** L at θ, the fit's state unchanged (for checks). */
-    double lossAt(double[] th, boolean count) { return count ? lossAt(th) : adjoint.loss(th, observed); }
 
     @Override public boolean iterate() {
         if (converged) return false;

@@ -11,9 +11,9 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import xpbdcloth.engine.ConstraintBlock;
 import xpbdcloth.engine.ConstraintFamily;
+import xpbdcloth.fit.DynamicFit;
 import xpbdcloth.fit.FitException;
 import xpbdcloth.fit.FitFiles;
-import xpbdcloth.fit.DynamicFit;
 import xpbdcloth.fit.FitIteration;
 import xpbdcloth.fit.MaterialFit;
 import xpbdcloth.fit.Observation;
@@ -93,6 +93,8 @@ final class FitCommand implements Callable<Integer> {
         if (frames < 0) throw new IllegalArgumentException("frames must be >= 0, was " + frames);
         if ((makeObservation == null) == (observed == null))
             throw new IllegalArgumentException("give exactly one of --observed FILE (fit) and --make-observation FILE, was " + (observed == null ? "neither" : "both"));
+        if (frames > 0 && makeObservation == null)
+            throw new IllegalArgumentException("frames is for --make-observation (a fit takes as many frames as the folder holds), was " + frames);
         Scene sc = Scene.of(preset);
         if (makeObservation != null) return frames > 0 ? makeTrajectory(sc) : makeObservation(sc);
         boolean dynamic = Files.isDirectory(observed.toPath());
