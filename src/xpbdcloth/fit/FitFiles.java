@@ -82,13 +82,13 @@ public final class FitFiles {
             ConstraintFamily family = fit.families().get(f);
             if (family == ConstraintFamily.MEMBRANE) membraneScale = scale[f];
             else if (family == ConstraintFamily.DIHEDRAL) dihedralScale = scale[f];
-            else ((ObjectNode) root.with("families").with(name(family))).put("compliance", alpha[f]);
+            else root.withObject("families").withObject(name(family)).put("compliance", alpha[f]);
             fitted.append(f == 0 ? "" : ", ").append(name(family)).append(String.format(Locale.ROOT, " %.4g m/N", alpha[f]));
         }
         if (membraneScale != 1 || dihedralScale != 1) writeFabric(root, preset, membraneScale, dihedralScale);
         if (fit.fitsDamping()) {
             double c = fit.last().damping;
-            ((ObjectNode) root.with("solver")).put("damping", c);
+            root.withObject("solver").put("damping", c);
             fitted.append(fitted.length() == 0 ? "" : ", ").append(String.format(Locale.ROOT, "damping %.4g /s", c));
         }
         root.put("description", String.format(Locale.ROOT, "Fitted by xpbd-cloth fit to %s (RMS %.3f mm after %d iterations): %s. From: %s",
@@ -98,10 +98,10 @@ public final class FitFiles {
 
     private static void writeFabric(ObjectNode root, Preset preset, double membraneScale, double dihedralScale) {
         Fabric fabric = preset.fabric.fabric;
-        ObjectNode node = root.with("fabric");
+        ObjectNode node = root.withObject("fabric");
         if (node.has("catalogue")) {
             node.remove("catalogue");
-            ((ObjectNode) root.with("cloth")).put("arealDensity", fabric.arealDensity);
+            root.withObject("cloth").put("arealDensity", fabric.arealDensity);
         }
         OrthotropicMaterial m = fabric.membrane;
         node.put("name", (fabric.name.isEmpty() ? "fabric" : fabric.name) + " (fitted)");
