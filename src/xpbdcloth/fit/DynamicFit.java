@@ -15,7 +15,7 @@ import xpbdcloth.engine.Simulation;
  *   step   BFGS on θ = (ln s_f…, ln c/c⁰), Armijo backtracking, each component of a step at most 3
  * </pre>
  * Why BFGS and not Gauss–Newton as the static fit: reverse mode gives Jᵀr, the whole gradient, for the
- * price of about nine simulations (three forward passes and the reverse one), but not J itself (that would be one reverse pass per observed
+ * price of about eight simulations (two forward passes and the reverse one), but not J itself (that would be one reverse pass per observed
  * coordinate); with four parameters BFGS rebuilds their curvature from gradients in a few steps.
  * Differentiated: the trajectory as the solver ran it (its fixed sweep count, not a converged solve),
  * so the fit recovers the parameters of this simulator at these settings; the observation is taken at the

@@ -36,10 +36,10 @@ import xpbdcloth.engine.SolverType;
  * Predict, velocity update and damping are linear and reversed by hand.
  *
  * <p>Memory: the state (x, v) at the start of every frame (6 doubles per particle per frame, growing
- * linearly with the frames: 12 KB a frame for a 16² cloth), the states at the starts of one frame's
- * substeps, and one substep's tape (the particles' positions and λ before each projection, re-made from
- * the substep's start when it is reversed). A frame is simulated three times per gradient: the pass that
- * stores the checkpoints, the one that stores the substep starts, the taped one.
+ * linearly with the frames: 12 KB a frame for a 16² cloth) and one frame's tape (the particles' positions
+ * and λ before each projection of its substeps, 4.6 MB with the other working arrays for the 16² drape at 5 substeps
+ * × 10 sweeps, made once), re-made from the frame's checkpoint when the frame is reversed. A frame is simulated twice per
+ * gradient: the pass that stores the checkpoints and the taped one.
  *
  * <p>Parameters θ: ln s_f per fitted family (αⱼ = s_f·αⱼ⁰, the scene's αⱼ⁰), then ln(c/c⁰) for the damping
  * rate c if it is fitted. Assumed: no contacts, attachments, scripted pins or external forces (refused),
@@ -61,6 +61,10 @@ final class TrajectoryAdjoint {
     private final double fdStep;
 
     // Working state, made once.
+    /** The velocity at the end of each substep of the frame being reversed (the damping's derivative needs it). */
+    private final double[][] endV;
+    /** Tape entries of one substep (the projections' inputs over its sweeps). */
+    private final int substepTape;
     private final double[] v, prev, lambda, alphaTilde, tape, grad = new double[12], gPlus = new double[12], gMinus = new double[12],
             hu = new double[12], huHalf = new double[12], saved = new double[12], gBar = new double[12];
     private double decay, dampingRate;
@@ -133,15 +137,15 @@ final class TrajectoryAdjoint {
         prev = new double[3 * n];
         lambda = new double[total];
         alphaTilde = new double[total];
-        tape = new double[iterations * tapeLength];
+        substepTape = iterations * tapeLength;
+        tape = new double[substeps * substepTape];
+        endV = new double[substeps][3 * n];
         fdStep = 1e-5 * shortestEdge();
     }
 
     int parameters() { return parameters; }
     int particles() { return n; }
-    double timestep() { return h * substeps; }
     boolean isPinned(int i) { return w[i] == 0; }
-    double[] initialPositions() { return x0.clone(); }
 
     /** α per fitted family and, last, the damping rate (1/s) at θ, for reports. */
     double[] values(double[] theta) {
@@ -174,7 +178,7 @@ final class TrajectoryAdjoint {
         System.arraycopy(v0, 0, v, 0, v.length);
         double[][] out = new double[frames][];
         for (int f = 0; f < frames; f++) {
-            for (int s = 0; s < substeps; s++) substep(false);
+            for (int s = 0; s < substeps; s++) substep(-1);
             out[f] = x.clone();
         }
         return out;
@@ -226,37 +230,29 @@ final class TrajectoryAdjoint {
         for (int f = 0; f < frames; f++) {
             checkX[f] = x.clone();
             checkV[f] = v.clone();
-            for (int s = 0; s < substeps; s++) substep(false);
+            for (int s = 0; s < substeps; s++) substep(-1);
             l += frameLoss(x, observed[f]);
         }
         checkX[frames] = x.clone();
         if (lossOut != null) lossOut[0] = l;
         double[] xBar = new double[3 * n], vBar = new double[3 * n], thetaBar = new double[parameters];
-        double[][] subX = new double[substeps][3 * n], subV = new double[substeps][3 * n];
         for (int f = frames - 1; f >= 0; f--) {
             for (int i = 0; i < n; i++)
                 if (w[i] != 0) for (int a = 0; a < 3; a++) xBar[3 * i + a] += checkX[f + 1][3 * i + a] - observed[f][3 * i + a];
-            // Pass 2: the substeps' starts within this frame.
+            // Pass 2: the frame taped from its checkpoint, then its substeps reversed, last first.
             System.arraycopy(checkX[f], 0, x, 0, x.length);
             System.arraycopy(checkV[f], 0, v, 0, v.length);
             for (int s = 0; s < substeps; s++) {
-                System.arraycopy(x, 0, subX[s], 0, x.length);
-                System.arraycopy(v, 0, subV[s], 0, v.length);
-                substep(false);
+                substep(s * substepTape);
+                System.arraycopy(v, 0, endV[s], 0, v.length);
             }
-            // Pass 3: each substep taped from its start, then reversed.
-            for (int s = substeps - 1; s >= 0; s--) {
-                System.arraycopy(subX[s], 0, x, 0, x.length);
-                System.arraycopy(subV[s], 0, v, 0, v.length);
-                substep(true);
-                reverseSubstep(xBar, vBar, thetaBar);
-            }
+            for (int s = substeps - 1; s >= 0; s--) reverseSubstep(s, xBar, vBar, thetaBar);
         }
         return thetaBar;
     }
 
-    /** One substep on (scratch positions, v), the projections' inputs recorded when {@code record}. */
-    private void substep(boolean record) {
+    /** One substep on (scratch positions, v), the projections' inputs recorded from tape[record] on (none if record &lt; 0). */
+    private void substep(int record) {
         final double[] x = scratch.positions();
         for (int i = 0; i < n; i++) {
             int k = 3 * i;
@@ -266,13 +262,13 @@ final class TrajectoryAdjoint {
             x[k] += h * v[k]; x[k + 1] += h * v[k + 1]; x[k + 2] += h * v[k + 2];
         }
         Arrays.fill(lambda, 0);
-        int t = 0;
+        int t = record;
         for (int it = 0; it < iterations; it++)
             for (int k = 0; k < blocks.length; k++) {
                 ConstraintBlock b = blocks[k];
                 int arity = b.arity();
                 for (int i = 0, j = lambdaOffset[k]; i < b.count(); i++, j++) {
-                    if (record) {
+                    if (record >= 0) {
                         for (int q = 0; q < arity; q++) {
                             int c = 3 * b.particle(i, q);
                             tape[t++] = x[c]; tape[t++] = x[c + 1]; tape[t++] = x[c + 2];
@@ -316,17 +312,17 @@ final class TrajectoryAdjoint {
     }
 
     /**
-     * Turns (x̄, v̄), the adjoints of the substep's end state, into those of its start, adding ∂/∂θ to
-     * thetaBar. Needs the substep just taped: scratch positions at its end, prev at its start, v at its end.
+     * Turns (x̄, v̄), the adjoints of substep s's end state, into those of its start, adding ∂/∂θ to
+     * thetaBar, from its tape and its end velocity.
      */
-    private void reverseSubstep(double[] xBar, double[] vBar, double[] thetaBar) {
-        final double[] x = scratch.positions();
+    private void reverseSubstep(int s, double[] xBar, double[] vBar, double[] thetaBar) {
+        final double[] vEnd = endV[s];
         // Damping v'' = v'·e^(−ch) on free particles; v' = (x_end − prev)/h.
         for (int i = 0; i < n; i++) {
             if (w[i] == 0) continue;
             for (int a = 0; a < 3; a++) {
                 int c = 3 * i + a;
-                if (fitsDamping) thetaBar[parameters - 1] += vBar[c] * v[c] * (-h * dampingRate);
+                if (fitsDamping) thetaBar[parameters - 1] += vBar[c] * vEnd[c] * (-h * dampingRate);
                 vBar[c] *= decay;
             }
         }
@@ -338,7 +334,7 @@ final class TrajectoryAdjoint {
         }
         // The sweeps, last projection first; λ̄ starts at 0 (λ's final value is not an output).
         Arrays.fill(lambda, 0); // reused as λ̄
-        int t = tape.length;
+        int t = (s + 1) * substepTape;
         for (int it = iterations - 1; it >= 0; it--)
             for (int k = blocks.length - 1; k >= 0; k--) {
                 ConstraintBlock b = blocks[k];
