@@ -51,7 +51,14 @@ final class ClothEnergy {
     private final double[] scale;
     private final double step;
     private final int band;
-    private final double[] grad = new double[12], gPlus = new double[12], gMinus = new double[12], column = new double[12];
+    private final double[] grad = new double[12], unit = new double[12], column = new double[12];
+    private final DirectionalDifference difference = new DirectionalDifference();
+    /** Cⱼ∇Cⱼ of a constraint at the particles' positions: ∇ of ½Cⱼ², smooth where Cⱼ = |d| is not. */
+    private static final DirectionalDifference.BlockFunction FORCE = (b, i, p, out) -> {
+        double c = b.evaluate(i, p);
+        b.gradient(i, p, out);
+        for (int q = 0, m = 3 * b.arity(); q < m; q++) out[q] *= c;
+    };
 
     ClothEnergy(Simulation sim, List<ConstraintFamily> fitted) {
         if (sim.settings().mode() != ConstraintMode.XPBD)
@@ -215,7 +222,6 @@ final class ClothEnergy {
     BandedMatrix hessian(double[] positions) {
         BandedMatrix h = new BandedMatrix(freeDofs, band);
         load(positions);
-        double[] x = scratch.positions();
         for (int k = 0; k < blocks.size(); k++) {
             ConstraintBlock b = blocks.get(k);
             int arity = b.arity(), local = 3 * arity;
@@ -224,20 +230,10 @@ final class ClothEnergy {
                 for (int col = 0; col < local; col++) {
                     int dc = dofOf[3 * b.particle(i, col / 3) + col % 3];
                     if (dc < 0) continue;
-                    int xc = 3 * b.particle(i, col / 3) + col % 3;
-                    double keep = x[xc];
-                    // Richardson: (4·D(h/2) − D(h))/3 cancels the central difference's h² error term.
-                    x[xc] = keep + step;
-                    forceOf(b, i, gPlus);
-                    x[xc] = keep - step;
-                    forceOf(b, i, gMinus);
-                    for (int q = 0; q < local; q++) column[q] = -(gPlus[q] - gMinus[q]) / (2 * step) / 3;
-                    x[xc] = keep + step / 2;
-                    forceOf(b, i, gPlus);
-                    x[xc] = keep - step / 2;
-                    forceOf(b, i, gMinus);
-                    x[xc] = keep;
-                    for (int q = 0; q < local; q++) column[q] += 4 * (gPlus[q] - gMinus[q]) / step / 3;
+                    // Column col: the derivative along that coordinate, at steps h and h/2 (Richardson), never shrunk.
+                    unit[col] = 1;
+                    difference.along(b, i, scratch, FORCE, unit, step, 0, column);
+                    unit[col] = 0;
                     // Each off-diagonal pair is met twice (as (r, c) and (c, r)): half of each makes H symmetric.
                     for (int row = 0; row < local; row++) {
                         int dr = dofOf[3 * b.particle(i, row / 3) + row % 3];
@@ -249,13 +245,6 @@ final class ClothEnergy {
             }
         }
         return h;
-    }
-
-    /** Cⱼ∇Cⱼ of constraint i at the scratch positions, into out (3·arity). */
-    private void forceOf(ConstraintBlock b, int i, double[] out) {
-        double c = b.evaluate(i, scratch);
-        b.gradient(i, scratch, out);
-        for (int q = 0, m = 3 * b.arity(); q < m; q++) out[q] *= c;
     }
 
     /** Tethers that are stretched at these positions (the energy leaves them out). */

@@ -31,7 +31,7 @@ import xpbdcloth.engine.SolverType;
  *   Δλ̄ = λ̄ + Σᵢ wᵢ∇ᵢC·x̄ᵢ,   N̄ = Δλ̄/D,   D̄ = −Δλ̄·Δλ/D
  *   x̄ ← x̄ − N̄·∇C + ∇²C·ḡ,    ḡᵢ = wᵢΔλ·x̄ᵢ + 2D̄·wᵢ∇ᵢC,    λ̄ ← λ̄ − N̄α̃,    θ̄ += (D̄ − N̄λ)·α̃
  * </pre>
- * where ∇²C·ḡ is the central difference of the block's own ∇C along ḡ (Richardson-extrapolated, the step
+ * where ∇²C·ḡ is the central difference of the block's own ∇C along ḡ ({@link DirectionalDifference}, the step
  * shrunk until two levels agree: near a flat triangle bend ∇²C grows as 1/|d| and a fixed step would miss it).
  * Predict, velocity update and damping are linear and reversed by hand.
  *
@@ -58,15 +58,17 @@ final class TrajectoryAdjoint {
     final List<ConstraintFamily> families;
     final boolean fitsDamping;
     private final int parameters;
+    /** The first step of ∇²C·ḡ's differences (1e-5 of the shortest edge), and how often it may be quartered. */
     private final double fdStep;
+    private static final int SHRINKS = 8;
 
     // Working state, made once.
     /** The velocity at the end of each substep of the frame being reversed (the damping's derivative needs it). */
     private final double[][] endV;
     /** Tape entries of one substep (the projections' inputs over its sweeps). */
     private final int substepTape;
-    private final double[] v, prev, lambda, alphaTilde, tape, grad = new double[12], gPlus = new double[12], gMinus = new double[12],
-            hu = new double[12], huHalf = new double[12], saved = new double[12], gBar = new double[12];
+    private final double[] v, prev, lambda, alphaTilde, tape, grad = new double[12], hu = new double[12], gBar = new double[12];
+    private final DirectionalDifference difference = new DirectionalDifference();
     private double decay, dampingRate;
 
     TrajectoryAdjoint(Simulation sim, List<ConstraintFamily> families, boolean fitsDamping) {
@@ -387,62 +389,11 @@ final class TrajectoryAdjoint {
         lambda[j] -= nBar * a;
         int param = parameterOf[k];
         if (param >= 0) thetaBar[param] += (dBar - nBar * lambdaBefore) * a;
-        if (gNorm > 0) hessianTimes(b, i, gBar, Math.sqrt(gNorm));
+        if (gNorm > 0) difference.along(b, i, scratch, DirectionalDifference.GRADIENT, gBar, fdStep, SHRINKS, hu);
         for (int q = 0; q < arity; q++) {
             int p = b.particle(i, q);
             for (int e = 0; e < 3; e++) xBar[3 * p + e] += -nBar * grad[3 * q + e] + (gNorm > 0 ? hu[3 * q + e] : 0);
         }
-    }
-
-    /**
-     * hu = ∇²C·u for constraint i of b at the scratch positions, by central differences of ∇C along
-     * u/|u|: steps ε and ε/2 combined by Richardson (error O(ε⁴)), ε quartered until the two agree to 1e-4
-     * (where ∇²C varies on a scale shorter than ε, as near a flat bend). Asking them to agree closer drives ε
-     * into round-off: at 1e-8 the gradient of a 1 s trajectory was off by 1e-3, at 1e-4 by 1e-7.
-     */
-    private void hessianTimes(ConstraintBlock b, int i, double[] u, double norm) {
-        int m = 3 * b.arity();
-        double eps = fdStep;
-        for (int attempt = 0; ; attempt++) {
-            centralDifference(b, i, u, norm, eps, hu);
-            centralDifference(b, i, u, norm, eps / 2, huHalf);
-            double diff = 0, size = 0;
-            for (int e = 0; e < m; e++) {
-                diff = Math.max(diff, Math.abs(hu[e] - huHalf[e]));
-                size = Math.max(size, Math.abs(huHalf[e]));
-            }
-            if (diff <= 1e-4 * size || attempt == 8) {
-                for (int e = 0; e < m; e++) hu[e] = huHalf[e] + (huHalf[e] - hu[e]) / 3;
-                return;
-            }
-            eps /= 4;
-        }
-    }
-
-    /** out = (∇C(x + εû) − ∇C(x − εû))/(2ε)·|u| ≈ ∇²C·u, û = u/|u|, the positions restored after. */
-    private void centralDifference(ConstraintBlock b, int i, double[] u, double norm, double eps, double[] out) {
-        final double[] x = scratch.positions();
-        int arity = b.arity();
-        for (int q = 0; q < arity; q++) {
-            int c = 3 * b.particle(i, q);
-            saved[3 * q] = x[c]; saved[3 * q + 1] = x[c + 1]; saved[3 * q + 2] = x[c + 2];
-        }
-        double step = eps / norm;
-        for (int q = 0; q < arity; q++) {
-            int c = 3 * b.particle(i, q);
-            for (int e = 0; e < 3; e++) x[c + e] = saved[3 * q + e] + step * u[3 * q + e];
-        }
-        b.gradient(i, scratch, gPlus);
-        for (int q = 0; q < arity; q++) {
-            int c = 3 * b.particle(i, q);
-            for (int e = 0; e < 3; e++) x[c + e] = saved[3 * q + e] - step * u[3 * q + e];
-        }
-        b.gradient(i, scratch, gMinus);
-        for (int q = 0; q < arity; q++) {
-            int c = 3 * b.particle(i, q);
-            for (int e = 0; e < 3; e++) x[c + e] = saved[3 * q + e];
-        }
-        for (int e = 0; e < 3 * arity; e++) out[e] = (gPlus[e] - gMinus[e]) / (2 * step);
     }
 
     private double shortestEdge() {
