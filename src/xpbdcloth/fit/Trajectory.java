@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.stream.Stream;
 import xpbdcloth.engine.Simulation;
+import xpbdcloth.scene.ObjExport;
 import xpbdcloth.scene.Scene;
 
 /**
@@ -50,7 +51,7 @@ public final class Trajectory {
         Files.createDirectories(folder);
         List<Path> written = new ArrayList<>();
         for (int f = 0; f < frames.length; f++) {
-            Path file = folder.resolve(String.format(Locale.ROOT, "frame-%04d.obj", f + 1));
+            Path file = ObjExport.frameFile(folder, f + 1);
             Observation.write(file, scene, frames[f], comment + ", frame " + (f + 1));
             written.add(file);
         }

@@ -23,6 +23,11 @@ public final class ObjExport {
         return Math.max(1, (int) Math.round(FRAME_SECONDS / dt));
     }
 
+    /** frame-0001.obj, … in the folder: how a sequence is named, so tools that read OBJ sequences take it in order. */
+    public static Path frameFile(Path folder, int frame) {
+        return folder.resolve(String.format(Locale.ROOT, "frame-%04d.obj", frame));
+    }
+
     /** The cloth's current shape. */
     public static void write(Path file, Scene scene) throws IOException {
         Simulation sim = scene.simulation();
@@ -42,7 +47,7 @@ public final class ObjExport {
         int steps = stepsPerFrame(preset.solver.dt);
         for (int f = 1; f <= frames; f++) {
             for (int s = 0; s < steps; s++) scene.simulation().step();
-            write(folder.resolve(String.format(Locale.ROOT, "frame-%04d.obj", f)), scene);
+            write(frameFile(folder, f), scene);
         }
         return frames;
     }
