@@ -27,7 +27,7 @@ final class AggregationMultigrid {
     static final double PIVOT_TOLERANCE = 1e-12;
     static final double STRENGTH = 0.25;
     /** Gauss–Seidel sweeps before and after the coarse correction. */
-    static final int SMOOTHING = 2;
+    static final int SMOOTHING = 1;
     /**
      * The coarse correction is scaled up: a piecewise-constant prolongator represents smooth error too
      * crudely and its Galerkin operator is too stiff, so the plain correction undershoots (Vaněk et al.;
@@ -41,6 +41,8 @@ final class AggregationMultigrid {
     /** scatter.get(l)[k]: position in level l+1's values of level l's value k. */
     private final List<int[]> scatter = new ArrayList<>();
     private final List<double[]> rhs = new ArrayList<>(), sol = new ArrayList<>(), tmp = new ArrayList<>();
+    /** The finest level's smoother. */
+    private final ChainSmoother chains;
     private double[] cholesky;
     private int coarseSize;
     final long setupNanos;
@@ -67,6 +69,7 @@ final class AggregationMultigrid {
         }
         coarseSize = a.size;
         cholesky = new double[coarseSize * coarseSize];
+        chains = new ChainSmoother(fine);
         refresh();
         setupNanos = System.nanoTime() - t0;
     }
@@ -75,6 +78,7 @@ final class AggregationMultigrid {
 
     /** Recomputes the coarse values from the fine level's current values (after a linearisation). */
     void refresh() {
+        chains.refresh();
         for (int l = 0; l + 1 < levels.size(); l++) {
             SparseMatrix f = levels.get(l), c = levels.get(l + 1);
             Arrays.fill(c.val, 0);
@@ -84,11 +88,12 @@ final class AggregationMultigrid {
         factorCoarsest();
     }
 
-    /** z = M⁻¹ r: one V-cycle from a zero guess. */
+    /** z = M⁻¹ r on the fine level's rows (the first ones of r and z): one V-cycle from a zero guess. */
     void apply(double[] r, double[] z) {
-        System.arraycopy(r, 0, rhs.get(0), 0, r.length);
+        int n = levels.get(0).size;
+        System.arraycopy(r, 0, rhs.get(0), 0, n);
         cycle(0);
-        System.arraycopy(sol.get(0), 0, z, 0, z.length);
+        System.arraycopy(sol.get(0), 0, z, 0, n);
     }
 
     private void cycle(int l) {
@@ -96,7 +101,7 @@ final class AggregationMultigrid {
         double[] b = rhs.get(l), x = sol.get(l), t = tmp.get(l);
         Arrays.fill(x, 0);
         if (l == levels.size() - 1) { solveCoarsest(b, x); return; }
-        for (int s = 0; s < SMOOTHING; s++) a.gaussSeidel(b, x, true);
+        for (int s = 0; s < SMOOTHING; s++) smooth(l, b, x, true);
         a.multiply(x, t);
         int[] agg = aggregateOf.get(l);
         double[] bc = rhs.get(l + 1);
@@ -105,7 +110,12 @@ final class AggregationMultigrid {
         cycle(l + 1);
         double[] xc = sol.get(l + 1);
         for (int i = 0; i < a.size; i++) x[i] += OVER_CORRECTION * xc[agg[i]];
-        for (int s = 0; s < SMOOTHING; s++) a.gaussSeidel(b, x, false);
+        for (int s = 0; s < SMOOTHING; s++) smooth(l, b, x, false);
+    }
+
+    private void smooth(int l, double[] b, double[] x, boolean forward) {
+        if (l == 0) chains.sweep(b, x, forward);
+        else levels.get(l).gaussSeidel(b, x, forward);
     }
 
     private static int[] aggregate(SparseMatrix a) {

@@ -15,7 +15,7 @@ import java.util.Arrays;
  * direction would be arbitrary; the neighbours' constraints separate them); both particles pinned
  * (w_a + w_b = 0) leaves them untouched.
  */
-public final class DistanceBlock extends ConstraintBlock {
+public final class DistanceBlock extends ConstraintBlock implements LinearLength {
     /** Below this length (m) the direction n is numerically meaningless. */
     static final double MIN_LENGTH = 1e-12;
 
@@ -51,6 +51,8 @@ public final class DistanceBlock extends ConstraintBlock {
         double dx = p.x[3 * a] - p.x[3 * b], dy = p.x[3 * a + 1] - p.x[3 * b + 1], dz = p.x[3 * a + 2] - p.x[3 * b + 2];
         return Math.sqrt(dx * dx + dy * dy + dz * dz);
     }
+
+    @Override public double coefficient(int k) { return k == 0 ? 1 : -1; }
 
     public int a(int i) { return particles[2 * i]; }
     public int b(int i) { return particles[2 * i + 1]; }

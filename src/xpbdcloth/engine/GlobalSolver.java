@@ -19,7 +19,9 @@ import java.util.Arrays;
  */
 final class GlobalSolver {
     private final Constraint[] cs;
-    private final int m;
+    /** Constraints, and rows of the system: the constraints', then two per {@link GeometricStiffness} entry. */
+    private final int m, rows;
+    private final GeometricStiffness geometric;
     private final boolean multigrid;
     private final double tolerance;
     private final int maxIterations;
@@ -28,24 +30,44 @@ final class GlobalSolver {
     private final double[] grad;
     /** For each pair of entries on one particle: where their product goes in A, and the two entries. */
     private final int[] pairSlot, pairE, pairF;
+    /** A = J W Jᵀ + α̃ over the constraint rows (with Levenberg–Marquardt damping). */
     private final SparseMatrix a;
+    /**
+     * The geometric-stiffness rows m, m+1, … of the system, as rows over all columns (constraint and
+     * stiffness): their couplings to the constraint rows are A's missing columns, used transposed. Only
+     * {@link #active} rows are filled and take part, so a cloth without significant tension solves the
+     * same system, at the same cost, as without them.
+     */
+    private final int[] geoRowStart, geoCol, geoDiag;
+    private final double[] geoVal;
+    private final int[] geoPairStart, geoPairSlot, geoPairE, geoPairF;
+    private final boolean[] active;
+    /** The active stiffness rows (system row indices), {@link #activeCount} of them. */
+    private final int[] activeRows;
+    private int activeCount;
     private final double[] c, alphaTilde, b, dl, r, z, p, ap, scratch;
     /** W JᵀΔλ per particle coordinate, and the positions the line search starts from. */
     private final double[] move, start;
     /** Per particle, the most it may move in one iteration (m): {@link #MAX_MOVE} of its shortest distance constraint. */
     private final double[] reach;
     private AggregationMultigrid mg;
+    /** Time to build the topology (entries, patterns, pair maps), once per constraint set. */
+    private final long patternNanos;
     private int lastIterations, totalIterations, rejectedSteps;
     private double lastRelativeResidual;
 
     /**
-     * Levenberg–Marquardt damping μ: the matrix solved is J W Jᵀ + μ·diag(J W Jᵀ) + α̃. Hard constraints
-     * (α = 0) outnumber the degrees of freedom of a cloth with all three families (4865 against 3066 at
-     * 32²), so J W Jᵀ alone is only semi-definite; the damping makes it definite, so conjugate gradients
-     * and the multigrid's coarse Cholesky have a unique answer. It changes the step, never the solution:
-     * at C + α̃λ = 0 the right-hand side is 0 and so is Δλ (Nocedal and Wright 2006, §10.3). It does not
-     * make an infeasible hard system feasible (pins pulled wider than a hard cloth's rest shape): that
-     * cloth still tears, finitely; see the README's Robustness section.
+     * Levenberg–Marquardt damping μ: the diagonal solved is d + max(α̃, μ d) with d = (J W Jᵀ)ᵢᵢ. Hard
+     * constraints (α = 0) can outnumber the degrees of freedom (a pinned triangle mesh has about as many
+     * edges as coordinates), so J W Jᵀ alone may be only semi-definite; the damping makes it definite, so
+     * conjugate gradients and the multigrid's coarse Cholesky have a unique answer. Within a step it changes
+     * the step, never the solution: at C + α̃λ = 0 the right-hand side is 0 and so is Δλ (Nocedal and
+     * Wright 2006, §10.3). But one iteration per step never reaches that point, and the damped matrix then
+     * biases the result: a 40-link chain (α̃ = 0.36/kg against d = 200/kg) settled 5.6e-4 off Hooke with
+     * μ d added to every row. A compliance already larger than μ d makes the row definite by itself, so
+     * such rows get none, and the chain settles within 1e-11 (7e-12).
+     * It does not make an infeasible hard system feasible (pins pulled wider than a hard cloth's rest
+     * shape): that cloth still tears, finitely; see the README's Robustness section.
      */
     static final double DAMPING = 1e-6;
     /** Armijo's sufficient-decrease constant: any small positive value; 1e-4 is the textbook one. */
@@ -54,25 +76,32 @@ final class GlobalSolver {
     static final double MIN_STEP = 1.0 / 256;
     /** The most a particle may move in one global iteration, as a fraction of its shortest distance constraint. */
     static final double MAX_MOVE = 0.5;
+    /** The least κ Σ cₖ² wₖ (geometric stiffness against the masses it moves) worth a pair of rows. */
+    static final double SIGNIFICANT = 0.1;
+    /** The most κ Σ cₖ² wₖ a stiffness row is given (see {@link #lineariseStiffness}). */
+    static final double STIFFEST = 100;
 
     GlobalSolver(Constraint[] constraints, int particleCount, boolean multigrid, double tolerance, int maxIterations) {
+        long t0 = System.nanoTime();
         this.cs = constraints;
         this.m = constraints.length;
         this.multigrid = multigrid;
         this.tolerance = tolerance;
         this.maxIterations = maxIterations;
-        entryStart = new int[m + 1];
-        int[][] ps = new int[m][];
+        geometric = new GeometricStiffness(constraints);
+        rows = m + 2 * geometric.count();
+        entryStart = new int[rows + 1];
+        int[][] ps = new int[rows][];
         int maxEntries = 0;
-        for (int i = 0; i < m; i++) {
-            ps[i] = constraints[i].particles();
+        for (int i = 0; i < rows; i++) {
+            ps[i] = constraints[i < m ? i : geometric.constraint[(i - m) / 2]].particles();
             entryStart[i + 1] = entryStart[i] + ps[i].length;
             maxEntries = Math.max(maxEntries, ps[i].length);
         }
-        int entries = entryStart[m];
+        int entries = entryStart[rows];
         entryParticle = new int[entries];
         entryOwner = new int[entries];
-        for (int i = 0; i < m; i++)
+        for (int i = 0; i < rows; i++)
             for (int k = 0; k < ps[i].length; k++) {
                 entryParticle[entryStart[i] + k] = ps[i][k];
                 entryOwner[entryStart[i] + k] = i;
@@ -80,27 +109,29 @@ final class GlobalSolver {
         grad = new double[3 * entries];
         scratch = new double[3 * maxEntries];
 
-        // Entries by particle.
+        // Entries by particle, in entry order (so a particle's constraint rows come before its stiffness rows).
         int[] pStart = new int[particleCount + 1];
         for (int e = 0; e < entries; e++) pStart[entryParticle[e] + 1]++;
         for (int q = 0; q < particleCount; q++) pStart[q + 1] += pStart[q];
         int[] fill = pStart.clone(), byParticle = new int[entries];
         for (int e = 0; e < entries; e++) byParticle[fill[entryParticle[e]]++] = e;
 
-        // Pattern of A: constraints sharing a particle.
-        int[] rowStart = new int[m + 1];
-        int[] mark = new int[m];
+        // Patterns: A over the constraint rows (rows sharing a particle), and the stiffness rows' own
+        // rows over all columns (A's stiffness columns are their transpose).
+        int[] rowStart = new int[rows + 1];
+        int[] mark = new int[rows];
         Arrays.fill(mark, -1);
-        int[][] rowCols = new int[m][];
-        int pairs = 0;
-        for (int i = 0; i < m; i++) {
+        int[][] rowCols = new int[rows][];
+        int pairs = 0, geoPairs = 0;
+        for (int i = 0; i < rows; i++) {
             int[] buf = new int[16];
             int nb = 0;
             for (int e = entryStart[i]; e < entryStart[i + 1]; e++) {
                 int q = entryParticle[e];
                 for (int t = pStart[q]; t < pStart[q + 1]; t++) {
                     int j = entryOwner[byParticle[t]];
-                    pairs++;
+                    if (i < m && j >= m) continue;
+                    if (i < m) pairs++; else geoPairs++;
                     if (mark[j] != i) {
                         mark[j] = i;
                         if (nb == buf.length) buf = Arrays.copyOf(buf, 2 * nb);
@@ -114,30 +145,57 @@ final class GlobalSolver {
         }
         int[] col = new int[rowStart[m]];
         for (int i = 0; i < m; i++) System.arraycopy(rowCols[i], 0, col, rowStart[i], rowCols[i].length);
-        a = new SparseMatrix(m, rowStart, col);
+        a = new SparseMatrix(m, Arrays.copyOf(rowStart, m + 1), col);
+        int g = rows - m;
+        geoRowStart = new int[g + 1];
+        for (int j = 0; j < g; j++) geoRowStart[j + 1] = geoRowStart[j] + rowCols[m + j].length;
+        geoCol = new int[geoRowStart[g]];
+        geoVal = new double[geoCol.length];
+        geoDiag = new int[g];
+        for (int j = 0; j < g; j++) {
+            System.arraycopy(rowCols[m + j], 0, geoCol, geoRowStart[j], rowCols[m + j].length);
+            geoDiag[j] = geoRowStart[j] + Arrays.binarySearch(rowCols[m + j], m + j);
+        }
         pairSlot = new int[pairs];
         pairE = new int[pairs];
         pairF = new int[pairs];
-        int k = 0;
-        for (int i = 0; i < m; i++)
+        geoPairStart = new int[g + 1];
+        geoPairSlot = new int[geoPairs];
+        geoPairE = new int[geoPairs];
+        geoPairF = new int[geoPairs];
+        int k = 0, kg = 0;
+        for (int i = 0; i < rows; i++) {
             for (int e = entryStart[i]; e < entryStart[i + 1]; e++) {
                 int q = entryParticle[e];
                 for (int t = pStart[q]; t < pStart[q + 1]; t++) {
-                    int f = byParticle[t];
-                    pairSlot[k] = a.find(i, entryOwner[f]);
-                    pairE[k] = e;
-                    pairF[k] = f;
-                    k++;
+                    int f = byParticle[t], j = entryOwner[f];
+                    if (i < m) {
+                        if (j >= m) continue;
+                        pairSlot[k] = a.find(i, j);
+                        pairE[k] = e;
+                        pairF[k] = f;
+                        k++;
+                    } else {
+                        int row = i - m;
+                        geoPairSlot[kg] = geoRowStart[row] + Arrays.binarySearch(rowCols[i], j);
+                        geoPairE[kg] = e;
+                        geoPairF[kg] = f;
+                        kg++;
+                    }
                 }
             }
+            if (i >= m) geoPairStart[i - m + 1] = kg;
+        }
+        active = new boolean[g];
+        activeRows = new int[g];
         c = new double[m];
-        alphaTilde = new double[m];
-        b = new double[m];
-        dl = new double[m];
-        r = new double[m];
-        z = new double[m];
-        p = new double[m];
-        ap = new double[m];
+        alphaTilde = new double[rows];
+        b = new double[rows];
+        dl = new double[rows];
+        r = new double[rows];
+        z = new double[rows];
+        p = new double[rows];
+        ap = new double[rows];
         move = new double[3 * particleCount];
         start = new double[3 * particleCount];
         reach = new double[particleCount];
@@ -147,7 +205,11 @@ final class GlobalSolver {
             double r = MAX_MOVE * ((DistanceConstraint) con).restLength();
             for (int q : con.particles()) reach[q] = Math.min(reach[q], r);
         }
+        patternNanos = System.nanoTime() - t0;
     }
+
+    /** Whether a block's constraints go into the global system (the others are swept after each global step). */
+    static boolean takes(ConstraintBlock b) { return b instanceof DistanceBlock; }
 
     boolean multigrid() { return multigrid; }
     Constraint[] constraints() { return cs; }
@@ -159,6 +221,8 @@ final class GlobalSolver {
     /** Iterations whose step was not taken (no decrease of the merit, or a non-finite Δλ). */
     int rejectedSteps() { return rejectedSteps; }
     long multigridSetupNanos() { return mg == null ? 0 : mg.setupNanos; }
+    /** The whole setup, once per constraint topology: patterns and pair maps, and the multigrid hierarchy. */
+    long setupNanos() { return patternNanos + multigridSetupNanos(); }
     int multigridLevels() { return mg == null ? 0 : mg.levelCount(); }
 
     /**
@@ -173,23 +237,19 @@ final class GlobalSolver {
      * nothing, which is never wrong, only slow. s₀ ≤ 1 is the trust region ({@link #longestStep}).
      */
     void iterate(Particles particles, SolverContext ctx) {
+        step(particles, ctx);
+        geometric.remember(cs);
+    }
+
+    private void step(Particles particles, SolverContext ctx) {
         linearise(particles, ctx);
         solve();
         double merit0 = dot(b, b);
         if (merit0 == 0) return;
         final double[] x = particles.x, w = particles.w;
         Arrays.fill(move, 0);
-        for (int i = 0; i < m; i++) {
-            double d = dl[i];
-            if (!Double.isFinite(d)) { rejectedSteps++; return; }
-            for (int e = entryStart[i]; e < entryStart[i + 1]; e++) {
-                int q = entryParticle[e];
-                double s = w[q] * d;
-                move[3 * q] += s * grad[3 * e];
-                move[3 * q + 1] += s * grad[3 * e + 1];
-                move[3 * q + 2] += s * grad[3 * e + 2];
-            }
-        }
+        for (int i = 0; i < m; i++) if (!addMove(i, w)) { rejectedSteps++; return; }
+        for (int k = 0; k < activeCount; k++) if (!addMove(activeRows[k], w)) { rejectedSteps++; return; }
         System.arraycopy(x, 0, start, 0, x.length);
         double slope = -dot(b, b) + dot(b, r); // d/ds of ‖F‖² / 2 at s = 0, with F(0) = −b and F'(0) = b − r
         double first = longestStep();
@@ -203,6 +263,20 @@ final class GlobalSolver {
         }
         System.arraycopy(start, 0, x, 0, x.length);
         rejectedSteps++;
+    }
+
+    /** move += W gᵢᵀ Δλᵢ for row i; false if its Δλ is not finite. */
+    private boolean addMove(int i, double[] w) {
+        double d = dl[i];
+        if (!Double.isFinite(d)) return false;
+        for (int e = entryStart[i]; e < entryStart[i + 1]; e++) {
+            int q = entryParticle[e];
+            double s = w[q] * d;
+            move[3 * q] += s * grad[3 * e];
+            move[3 * q + 1] += s * grad[3 * e + 1];
+            move[3 * q + 2] += s * grad[3 * e + 2];
+        }
+        return true;
     }
 
     /**
@@ -250,36 +324,105 @@ final class GlobalSolver {
         for (int i = 0; i < m; i++) {
             // A constraint on pinned particles only (a zero row) keeps a unit diagonal and gets Δλ = 0.
             if (a.val[a.diag[i]] + alphaTilde[i] <= 0) { a.val[a.diag[i]] = 1; b[i] = 0; }
-            else a.val[a.diag[i]] = (1 + DAMPING) * a.val[a.diag[i]] + alphaTilde[i];
+            else a.val[a.diag[i]] += Math.max(alphaTilde[i], DAMPING * a.val[a.diag[i]]);
         }
+        lineariseStiffness(particles);
         if (multigrid) {
             if (mg == null) mg = new AggregationMultigrid(a);
             else mg.refresh();
         }
     }
 
+    /**
+     * Fills the stiffness rows of the constraints whose tension matters here: a row pair is active when
+     * κ Σ cₖ² wₖ ≥ {@link #SIGNIFICANT}, the geometric stiffness against the masses it moves. Below that
+     * it changes a particle's transverse response by less than 0.1 % and is left out (its rows zero), so
+     * a cloth whose substeps are short next to its tension (h² w T / l small) pays nothing for it.
+     */
+    private void lineariseStiffness(Particles particles) {
+        final double[] w = particles.w;
+        activeCount = 0;
+        for (int j = 0; j < geometric.count(); j++) {
+            int row = m + 2 * j, e0 = entryStart[row], e1 = entryStart[row + 1], e2 = entryStart[row + 2];
+            double compliance = geometric.fill(j, particles, cs[geometric.constraint[j]], grad, 3 * e0, 3 * e1);
+            double wSum = 0;
+            for (int e = e0; e < e1; e++) {
+                double gx = grad[3 * e], gy = grad[3 * e + 1], gz = grad[3 * e + 2];
+                wSum += w[entryParticle[e]] * (gx * gx + gy * gy + gz * gz);
+            }
+            boolean on = wSum > 0 && wSum >= SIGNIFICANT * compliance;
+            compliance = Math.max(compliance, wSum / STIFFEST);
+            active[2 * j] = active[2 * j + 1] = on;
+            if (!on) {
+                Arrays.fill(grad, 3 * e0, 3 * e2, 0);
+                dl[row] = dl[row + 1] = r[row] = r[row + 1] = z[row] = z[row + 1] = p[row] = p[row + 1] = ap[row] = ap[row + 1] = b[row] = b[row + 1] = 0;
+                continue;
+            }
+            alphaTilde[row] = alphaTilde[row + 1] = compliance;
+            b[row] = b[row + 1] = 0;
+            activeRows[activeCount++] = row;
+            activeRows[activeCount++] = row + 1;
+        }
+        for (int k = 0; k < activeCount; k++) {
+            int j = activeRows[k] - m;
+            Arrays.fill(geoVal, geoRowStart[j], geoRowStart[j + 1], 0);
+            for (int t = geoPairStart[j]; t < geoPairStart[j + 1]; t++) {
+                int e = 3 * geoPairE[t], f = 3 * geoPairF[t];
+                geoVal[geoPairSlot[t]] += w[entryParticle[geoPairE[t]]] * (grad[e] * grad[f] + grad[e + 1] * grad[f + 1] + grad[e + 2] * grad[f + 2]);
+            }
+            geoVal[geoDiag[j]] += alphaTilde[m + j]; // ≥ Σ cₖ² wₖ / STIFFEST: definite without damping
+        }
+    }
+
+    /** y = A x over the whole system (constraint rows, then the active stiffness rows). */
+    private void multiply(double[] x, double[] y) {
+        a.multiply(x, y);
+        for (int k = 0; k < activeCount; k++) {
+            int row = activeRows[k], j = row - m;
+            double s = 0, xr = x[row];
+            for (int t = geoRowStart[j]; t < geoRowStart[j + 1]; t++) {
+                int col = geoCol[t];
+                double v = geoVal[t];
+                s += v * x[col]; // an inactive column's x is 0
+                if (col < m) y[col] += v * xr;
+            }
+            y[row] = s;
+        }
+    }
+
+    /**
+     * The multigrid V-cycle (or Jacobi) on the constraint rows and Jacobi on the stiffness rows: a
+     * block-diagonal preconditioner, symmetric and positive definite as conjugate gradients need. The
+     * hierarchy is built once for the constraints' topology, which the stiffness rows (switched on and
+     * off with the tension) do not change.
+     */
     private void precondition(double[] in, double[] out) {
         if (multigrid) mg.apply(in, out);
         else for (int i = 0; i < m; i++) out[i] = in[i] / a.val[a.diag[i]];
+        for (int k = 0; k < activeCount; k++) {
+            int row = activeRows[k];
+            out[row] = in[row] / geoVal[geoDiag[row - m]];
+        }
     }
 
     /** Conjugate gradients on A Δλ = b from Δλ = 0, to ‖r‖ ≤ tolerance·‖b‖. */
     private void solve() {
-        Arrays.fill(dl, 0);
-        System.arraycopy(b, 0, r, 0, m);
+        fill(dl, 0);
+        copy(b, r);
         double bNorm = Math.sqrt(dot(b, b));
         lastIterations = 0;
         lastRelativeResidual = 0;
         if (bNorm == 0) return;
         precondition(r, z);
-        System.arraycopy(z, 0, p, 0, m);
+        copy(z, p);
         double rz = dot(r, z);
         for (int it = 1; it <= maxIterations; it++) {
-            a.multiply(p, ap);
+            multiply(p, ap);
             double pap = dot(p, ap);
             if (pap <= 0) break;
             double alpha = rz / pap;
-            for (int i = 0; i < m; i++) { dl[i] += alpha * p[i]; r[i] -= alpha * ap[i]; }
+            axpy(alpha, p, dl);
+            axpy(-alpha, ap, r);
             lastIterations = it;
             lastRelativeResidual = Math.sqrt(dot(r, r)) / bNorm;
             if (!(lastRelativeResidual > tolerance)) break; // converged, or NaN: the line search rejects it
@@ -288,27 +431,70 @@ final class GlobalSolver {
             double beta = rzNew / rz;
             rz = rzNew;
             for (int i = 0; i < m; i++) p[i] = z[i] + beta * p[i];
+            for (int k = 0; k < activeCount; k++) { int i = activeRows[k]; p[i] = z[i] + beta * p[i]; }
         }
         totalIterations += lastIterations;
     }
 
-    private static double dot(double[] u, double[] v) {
+    // Vector operations over the constraint rows and the active stiffness rows (the others stay 0).
+    private double dot(double[] u, double[] v) {
         double s = 0;
-        for (int i = 0; i < u.length; i++) s += u[i] * v[i];
+        for (int i = 0; i < m; i++) s += u[i] * v[i];
+        for (int k = 0; k < activeCount; k++) { int i = activeRows[k]; s += u[i] * v[i]; }
         return s;
     }
 
-    /** The dense A (tests compare PCG against a direct solve). */
+    private void axpy(double alpha, double[] x, double[] y) {
+        for (int i = 0; i < m; i++) y[i] += alpha * x[i];
+        for (int k = 0; k < activeCount; k++) { int i = activeRows[k]; y[i] += alpha * x[i]; }
+    }
+
+    private void copy(double[] from, double[] to) {
+        System.arraycopy(from, 0, to, 0, m);
+        for (int k = 0; k < activeCount; k++) { int i = activeRows[k]; to[i] = from[i]; }
+    }
+
+    private void fill(double[] v, double value) {
+        Arrays.fill(v, 0, m, value);
+        for (int k = 0; k < activeCount; k++) v[activeRows[k]] = value;
+    }
+
+    /** Active stiffness rows after the last linearisation (two per tensioned constraint that counts). */
+    int activeStiffnessRows() { return activeCount; }
+
+    /** The dense A over the constraint rows and the active stiffness rows, in that order (tests compare PCG against a direct solve). */
     double[][] denseMatrix() {
-        double[][] d = new double[m][m];
+        int n = m + activeCount;
+        int[] index = new int[rows];
+        Arrays.fill(index, -1);
+        for (int i = 0; i < m; i++) index[i] = i;
+        for (int k = 0; k < activeCount; k++) index[activeRows[k]] = m + k;
+        double[][] d = new double[n][n];
         for (int i = 0; i < m; i++) for (int k = a.rowStart[i]; k < a.rowStart[i + 1]; k++) d[i][a.col[k]] = a.val[k];
+        for (int k = 0; k < activeCount; k++) {
+            int j = activeRows[k] - m;
+            for (int t = geoRowStart[j]; t < geoRowStart[j + 1]; t++) {
+                int col = index[geoCol[t]];
+                if (col < 0) continue;
+                d[m + k][col] = geoVal[t];
+                d[col][m + k] = geoVal[t];
+            }
+        }
         return d;
+    }
+
+    /** Values of the constraint rows and active stiffness rows of v, in {@link #denseMatrix}'s order. */
+    private double[] packed(double[] v) {
+        double[] out = new double[m + activeCount];
+        System.arraycopy(v, 0, out, 0, m);
+        for (int k = 0; k < activeCount; k++) out[m + k] = v[activeRows[k]];
+        return out;
     }
 
     /** Linearises and solves without moving anything: returns {A, b, Δλ} for tests. */
     double[][][] linearSystemForTest(Particles particles, SolverContext ctx) {
         linearise(particles, ctx);
         solve();
-        return new double[][][] {denseMatrix(), {b.clone()}, {dl.clone()}};
+        return new double[][][] {denseMatrix(), {packed(b)}, {packed(dl)}};
     }
 }

@@ -375,8 +375,10 @@ public final class Simulation {
         GlobalSolver g = type == SolverType.GAUSS_SEIDEL ? null : globalSolver(); // remade if the PCG settings changed
         if (solve != null && solvedFor.matches(type, coloured, threads, sweepListener, g)) return solve;
         if (type != SolverType.GAUSS_SEIDEL) {
+            List<ConstraintBlock> local = new ArrayList<>();
+            for (ConstraintBlock blk : body) if (!GlobalSolver.takes(blk)) local.add(blk);
             SequentialSweeps rest = new SequentialSweeps(SweepOrder.asBuilt(List.of(attachments)), particles, ctx, contacts, this, sweepListener);
-            solve = new GlobalIterations(g, rest, new SequentialSweeps(order, particles, ctx, contacts, this, sweepListener), contacts, particles, ctx, this, sweepListener);
+            solve = new GlobalIterations(g, SweepOrder.asBuilt(local), rest, new SequentialSweeps(order, particles, ctx, contacts, this, sweepListener), contacts, particles, ctx, this, sweepListener);
         } else if (!coloured) {
             solve = new SequentialSweeps(order, particles, ctx, contacts, this, sweepListener);
         } else {
@@ -431,13 +433,20 @@ public final class Simulation {
     private GlobalSolver globalSolver() {
         boolean mg = settings.solver() == SolverType.MULTIGRID_PCG;
         if (global == null || global.multigrid() != mg || global.tolerance() != settings.pcgTolerance() || global.maxIterations() != settings.pcgMaxIterations())
-            global = new GlobalSolver(bodyViews(), particles.count(), mg, settings.pcgTolerance(), settings.pcgMaxIterations());
+            global = new GlobalSolver(globalViews(), particles.count(), mg, settings.pcgTolerance(), settings.pcgMaxIterations());
         return global;
     }
 
     private Constraint[] bodyViews() {
         List<Constraint> v = new ArrayList<>();
         for (ConstraintBlock b : body) for (int i = 0; i < b.count(); i++) v.add(b.view(i));
+        return v.toArray(new Constraint[0]);
+    }
+
+    /** The cloth constraints the global system takes; the other blocks are swept after each global step. */
+    private Constraint[] globalViews() {
+        List<Constraint> v = new ArrayList<>();
+        for (ConstraintBlock b : body) if (GlobalSolver.takes(b)) for (int i = 0; i < b.count(); i++) v.add(b.view(i));
         return v.toArray(new Constraint[0]);
     }
 
@@ -451,6 +460,9 @@ public final class Simulation {
     public int totalPcgIterations() { return global == null ? 0 : global.totalIterations(); }
 
     /** Multigrid levels and setup time (ns) of the global solver, {0, 0} if none. */
+    /** Nanoseconds the global solver spent on its setup (once per constraint topology), 0 with Gauss–Seidel. */
+    public long globalSetupNanos() { return global == null ? 0 : global.setupNanos(); }
+
     public long[] multigridSetup() { return global == null ? new long[2] : new long[] {global.multigridLevels(), global.multigridSetupNanos()}; }
 
     /** The helper threads for {@code threads} (made once per thread count), or null for one thread. */

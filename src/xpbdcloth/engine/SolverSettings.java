@@ -25,7 +25,7 @@ public final class SolverSettings {
      */
     private double pcgTolerance = 1e-1;
     /** A cap that keeps a global iteration's cost bounded when the system is badly conditioned. */
-    private int pcgMaxIterations = 100;
+    private int pcgMaxIterations = 300;
     /** Bumped on every change that invalidates a constraint's cached per-iteration stiffness. */
     private long revision;
 

@@ -36,6 +36,15 @@ final class Plot {
         return this;
     }
 
+    /** A line in a chosen colour (for plots whose series come in families: one hue per family). */
+    Plot line(String name, List<Double> x, List<Double> y, java.awt.Color colour) {
+        XYSeries s = chart.addSeries(name, x, y);
+        s.setMarker(SeriesMarkers.CIRCLE);
+        s.setLineColor(colour);
+        s.setMarkerColor(colour);
+        return this;
+    }
+
     Plot dashed(String name, List<Double> x, List<Double> y) {
         XYSeries s = chart.addSeries(name, x, y);
         s.setMarker(SeriesMarkers.NONE);

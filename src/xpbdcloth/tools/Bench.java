@@ -13,6 +13,7 @@ import xpbdcloth.engine.DistanceBlock;
 import xpbdcloth.engine.Particles;
 import xpbdcloth.engine.Simulation;
 import xpbdcloth.engine.SolverSettings;
+import xpbdcloth.engine.SolverType;
 import xpbdcloth.engine.Sphere;
 import xpbdcloth.engine.SpherePath;
 
@@ -25,8 +26,8 @@ import xpbdcloth.engine.SpherePath;
  *
  * <p>{@code --full} prints the same columns after a first column {@code case}: the row-major order, the
  * Ten Minute Physics workload (15 substeps × 1 iteration, stretch + bending distance constraints), all
- * families with a sphere, the fabric (membrane + dihedral + tethers), N = 256, and the coloured solve on
- * 1 and 2 threads; memory per particle and
+ * families with a sphere, the fabric (membrane + dihedral + tethers), N = 256, the coloured solve on
+ * 1 and 2 threads, and the `hanging` scene under each solver (Gauss–Seidel, Jacobi-PCG, multigrid-PCG); memory per particle and
  * per constraint goes to stderr. Then the contact cases of {@link ContactBench}, under their own header.
  *
  * <p>Timing is a warmed-up loop: at least 2 s of warm-up, then at least 3 s measured; allocation is
@@ -54,6 +55,7 @@ public final class Bench {
         for (int n : new int[] {32, 64, 128}) System.out.println("fabric," + row(fabric(n)));
         for (int t : new int[] {1, 2}) System.out.println("parallel-" + t + "-threads," + row(grid(128, ConstraintOrder.COLOURED, t)));
         for (int t : new int[] {1, 2}) System.out.println("parallel-" + t + "-threads," + row(grid(256, ConstraintOrder.COLOURED, t)));
+        for (SolverType type : SolverType.values()) System.out.println("hanging-" + type.name().toLowerCase(Locale.ROOT).replace('_', '-') + "," + row(hanging(type)));
         memory();
         ContactBench.run();
     }
@@ -118,6 +120,13 @@ public final class Bench {
                 .timestep(0.02).order(ConstraintOrder.COLOURED));
         for (xpbdcloth.engine.ConstraintBlock b : xpbdcloth.fabric.FabricConstraints.build(cloth.particles(), cloth.triangles(), new double[] {1, 0, 0},
                 new xpbdcloth.engine.OrthotropicMaterial(2000, 800, 0.25, 30), 1e-5, true)) sim.add(b);
+        return sim;
+    }
+
+    /** The `hanging` scene as shipped (32², all three families, 10 substeps × 2 iterations), under one solver. */
+    static Simulation hanging(SolverType type) {
+        Simulation sim = xpbdcloth.scene.Scene.builtIn("hanging").simulation();
+        sim.settings().solver(type);
         return sim;
     }
 

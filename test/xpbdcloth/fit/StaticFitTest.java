@@ -101,8 +101,10 @@ class StaticFitTest {
     /**
      * The equilibrium the fit differentiates is the simulator's, up to XPBD's own approximation: one step
      * from it at rest, solved to convergence (the global solver), moves the cloth by an amount that falls
-     * as h⁴ (XPBD applies each Δλ along the gradient of the iterate it was computed at, an O(h⁴) error
-     * from rest), where a force F left over would move it by Fh²/m, falling only as h².
+     * at least as h³ (XPBD applies each Δλ along the gradient of the iterate it was computed at, so where
+     * it stops depends on the path: h⁴ for a Newton solve of every family at once, h³ for Gauss–Seidel
+     * and for the global solver, which sweeps shear and bend between its Newton steps), where a force F
+     * left over would move it by Fh²/m, falling only as h².
      */
     @Test
     void aConvergedStepFromTheEquilibriumMovesItOnlyByXpbdsOwnHigherOrderError() {
@@ -116,8 +118,8 @@ class StaticFitTest {
             double[] x = sim.particles().positions();
             for (int c = 0; c < x.length; c++) moved[k] = Math.max(moved[k], Math.abs(x[c] - observed[c]));
         }
-        assertTrue(moved[0] / moved[1] > 3000, "a tenth of the step moves " + moved[0] / moved[1] + " times less (h⁴: 10 000, a force: 100)");
-        assertTrue(moved[1] < 1e-9, "at h = 0.1 ms a step moves it " + moved[1] + " m");
+        assertTrue(moved[0] / moved[1] > 700, "a tenth of the step moves " + moved[0] / moved[1] + " times less (h³: 1000, a force: 100)");
+        assertTrue(moved[1] < 1e-8, "at h = 0.1 ms a step moves it " + moved[1] + " m");
     }
 
     @Test
