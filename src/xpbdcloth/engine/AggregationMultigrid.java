@@ -76,6 +76,9 @@ final class AggregationMultigrid {
 
     int levelCount() { return levels.size(); }
 
+    /** The finest level's chains (the global solver lays its stiffness rows along them). */
+    ChainSmoother chains() { return chains; }
+
     /** Recomputes the coarse values from the fine level's current values (after a linearisation). */
     void refresh() {
         chains.refresh();

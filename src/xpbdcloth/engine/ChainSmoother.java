@@ -27,21 +27,46 @@ final class ChainSmoother {
     private final int[] order, start;
     /** For position k of order: where A(order[k], order[k−1]) sits in a.val (−1 at a chain's start). */
     private final int[] link;
+    /** The chain each row is in. */
+    private final int[] chainOf;
     /** Thomas factors: pivot d and multiplier l per position; rhs scratch. */
     private final double[] pivot, lower, y;
 
+    /** Chains along A's strongest couplings. */
     ChainSmoother(SparseMatrix a) {
+        this(a, strongChains(a));
+    }
+
+    /** Given chains: {order, start} as in {@link #order} and {@link #start}, every row in exactly one. */
+    ChainSmoother(SparseMatrix a, int[][] chains) {
         this.a = a;
+        order = chains[0];
+        start = chains[1];
+        int n = a.size;
+        link = new int[n];
+        chainOf = new int[n];
+        for (int c = 0; c + 1 < start.length; c++)
+            for (int k = start[c]; k < start[c + 1]; k++) {
+                link[k] = k == start[c] ? -1 : a.find(order[k], order[k - 1]);
+                chainOf[order[k]] = c;
+            }
+        pivot = new double[n];
+        lower = new double[n];
+        y = new double[n];
+    }
+
+    /** {order, start}: a greedy maximum-weight path cover of the strong couplings (see the class comment). */
+    static int[][] strongChains(SparseMatrix a) {
         int n = a.size;
         int strong = 0;
-        for (int i = 0; i < n; i++) for (int k = a.rowStart[i]; k < a.rowStart[i + 1]; k++) if (a.col[k] > i && isStrong(i, k)) strong++;
+        for (int i = 0; i < n; i++) for (int k = a.rowStart[i]; k < a.rowStart[i + 1]; k++) if (a.col[k] > i && isStrong(a, i, k)) strong++;
         long[] keys = new long[strong];
         double[] weight = new double[strong];
         Integer[] byWeight = new Integer[strong];
         int s = 0;
         for (int i = 0; i < n; i++)
             for (int k = a.rowStart[i]; k < a.rowStart[i + 1]; k++)
-                if (a.col[k] > i && isStrong(i, k)) {
+                if (a.col[k] > i && isStrong(a, i, k)) {
                     keys[s] = (long) i << 32 | a.col[k];
                     weight[s] = Math.abs(a.val[k]) / Math.sqrt(a.val[a.diag[i]] * a.val[a.diag[a.col[k]]]);
                     byWeight[s] = s;
@@ -60,9 +85,7 @@ final class ChainSmoother {
             next[i][degree[i]++] = j;
             next[j][degree[j]++] = i;
         }
-        order = new int[n];
-        link = new int[n];
-        int[] starts = new int[n + 1];
+        int[] order = new int[n], starts = new int[n + 1];
         boolean[] placed = new boolean[n];
         int pos = 0, chains = 0;
         for (int i = 0; i < n; i++) {
@@ -71,9 +94,7 @@ final class ChainSmoother {
             int prev = -1, cur = i;
             while (cur >= 0) {
                 placed[cur] = true;
-                order[pos] = cur;
-                link[pos] = prev < 0 ? -1 : a.find(cur, prev);
-                pos++;
+                order[pos++] = cur;
                 int nxt = -1;
                 for (int t = 0; t < degree[cur]; t++) if (next[cur][t] != prev && !placed[next[cur][t]]) nxt = next[cur][t];
                 prev = cur;
@@ -81,10 +102,7 @@ final class ChainSmoother {
             }
         }
         starts[chains] = pos;
-        start = Arrays.copyOf(starts, chains + 1);
-        pivot = new double[n];
-        lower = new double[n];
-        y = new double[n];
+        return new int[][] {order, Arrays.copyOf(starts, chains + 1)};
     }
 
     private static int root(int[] parent, int i) {
@@ -92,12 +110,16 @@ final class ChainSmoother {
         return i;
     }
 
-    private boolean isStrong(int i, int k) {
+    private static boolean isStrong(SparseMatrix a, int i, int k) {
         int j = a.col[k];
         return j != i && Math.abs(a.val[k]) >= STRENGTH * Math.sqrt(a.val[a.diag[i]] * a.val[a.diag[j]]);
     }
 
     int chainCount() { return start.length - 1; }
+    /** Rows in chain order; chain c is {@code order()[start()[c] .. start()[c+1])}. */
+    int[] order() { return order; }
+    int[] start() { return start; }
+    int chainOf(int row) { return chainOf[row]; }
 
     /** LDLᵀ of each chain's tridiagonal block, from A's current values. */
     void refresh() {
@@ -134,6 +156,21 @@ final class ChainSmoother {
             for (int k = from; k < to; k++) y[k] /= pivot[k];
             for (int k = to - 2; k >= from; k--) y[k] -= lower[k + 1] * y[k + 1];
             for (int k = from; k < to; k++) x[order[k]] = y[k];
+        }
+    }
+
+    /**
+     * x = T⁻¹ b on the listed chains (T: each chain's tridiagonal block, couplings between chains left
+     * out: block Jacobi), for rows {@code offset + row} of b and x.
+     */
+    void solveChains(int[] chains, int count, double[] b, double[] x, int offset) {
+        for (int t = 0; t < count; t++) {
+            int c = chains[t], from = start[c], to = start[c + 1];
+            for (int k = from; k < to; k++) y[k] = b[offset + order[k]];
+            for (int k = from + 1; k < to; k++) y[k] -= lower[k] * y[k - 1];
+            for (int k = from; k < to; k++) y[k] /= pivot[k];
+            for (int k = to - 2; k >= from; k--) y[k] -= lower[k + 1] * y[k + 1];
+            for (int k = from; k < to; k++) x[offset + order[k]] = y[k];
         }
     }
 }

@@ -81,7 +81,12 @@ final class GeometricStiffness {
             java.util.Arrays.fill(grad, at2, at2 + 3 * arity, 0);
             return Double.POSITIVE_INFINITY;
         }
-        double nx = dx / len, ny = dy / len, nz = dz / len;
+        // n up to sign: its largest component made positive, so that in-line edges, whichever way their
+        // particles are listed, get the same t₁ and t₂, and their rows couple t₁ to t₁ (the multigrid
+        // preconditions them along chains of in-line edges).
+        double ax = Math.abs(dx), ay = Math.abs(dy), az = Math.abs(dz);
+        double up = (ax >= ay && ax >= az ? dx : ay >= az ? dy : dz) < 0 ? -1 / len : 1 / len;
+        double nx = dx * up, ny = dy * up, nz = dz * up;
         // An orthonormal basis around n without a branch on its direction (Duff et al. 2017, "Building an
         // Orthonormal Basis, Revisited", listing 2): any pair ⊥ n serves, only t₁t₁ᵀ + t₂t₂ᵀ matters.
         double sign = Math.copySign(1.0, nz), a = -1 / (sign + nz), b = nx * ny * a;

@@ -42,6 +42,23 @@ final class GlobalSolver {
     private final double[] geoVal;
     private final int[] geoPairStart, geoPairSlot, geoPairE, geoPairF;
     private final boolean[] active;
+    /**
+     * The stiffness rows' block among themselves (rows and columns numbered from 0), with {@link #geoToBlock}
+     * mapping each geoVal entry into it (−1 for a constraint column), and its chains: the stiffness rows
+     * of in-line edges couple like the edges' own rows, so with multigrid they are preconditioned by
+     * exact solves along the constraint chains of the finest level (block Jacobi), and a tensioned
+     * curtain's thousands of stiffness rows do not fall back on a diagonal. Inactive rows are the
+     * identity there.
+     */
+    private final SparseMatrix geoBlock;
+    private final int[] geoToBlock;
+    private ChainSmoother geoChains;
+    /** Chains with an active row, {@link #activeChainCount} of them; marks per chain, stamped per linearisation. */
+    private int[] activeChains, chainStamp;
+    private int activeChainCount, stamp;
+    /** The rows active at the previous linearisation, reset to the identity in {@link #geoBlock} first. */
+    private final int[] wasActive;
+    private int wasActiveCount;
     /** The active stiffness rows (system row indices), {@link #activeCount} of them. */
     private final int[] activeRows;
     private int activeCount;
@@ -188,6 +205,20 @@ final class GlobalSolver {
         }
         active = new boolean[g];
         activeRows = new int[g];
+        wasActive = new int[g];
+        int[] blockStart = new int[g + 1];
+        for (int j = 0; j < g; j++) {
+            int own = 0;
+            for (int c2 : rowCols[m + j]) if (c2 >= m) own++;
+            blockStart[j + 1] = blockStart[j] + own;
+        }
+        int[] blockCol = new int[blockStart[g]];
+        for (int j = 0, q = 0; j < g; j++) for (int c2 : rowCols[m + j]) if (c2 >= m) blockCol[q++] = c2 - m;
+        geoBlock = new SparseMatrix(g, blockStart, blockCol);
+        for (int j = 0; j < g; j++) geoBlock.val[geoBlock.diag[j]] = 1;
+        geoToBlock = new int[geoCol.length];
+        for (int j = 0; j < g; j++)
+            for (int t = geoRowStart[j]; t < geoRowStart[j + 1]; t++) geoToBlock[t] = geoCol[t] >= m ? geoBlock.find(j, geoCol[t] - m) : -1;
         c = new double[m];
         alphaTilde = new double[rows];
         b = new double[rows];
@@ -330,6 +361,7 @@ final class GlobalSolver {
         if (multigrid) {
             if (mg == null) mg = new AggregationMultigrid(a);
             else mg.refresh();
+            if (rows > m) refreshStiffnessChains();
         }
     }
 
@@ -341,6 +373,8 @@ final class GlobalSolver {
      */
     private void lineariseStiffness(Particles particles) {
         final double[] w = particles.w;
+        System.arraycopy(activeRows, 0, wasActive, 0, activeCount);
+        wasActiveCount = activeCount;
         activeCount = 0;
         for (int j = 0; j < geometric.count(); j++) {
             int row = m + 2 * j, e0 = entryStart[row], e1 = entryStart[row + 1], e2 = entryStart[row + 2];
@@ -374,6 +408,61 @@ final class GlobalSolver {
         }
     }
 
+    /** Copies the active stiffness rows into {@link #geoBlock}, refactors its chains and lists those with an active row. */
+    private void refreshStiffnessChains() {
+        if (geoChains == null) geoChains = new ChainSmoother(geoBlock, stiffnessChains(mg.chains()));
+        for (int k = 0; k < wasActiveCount; k++) {
+            int j = wasActive[k] - m;
+            for (int q = geoBlock.rowStart[j]; q < geoBlock.rowStart[j + 1]; q++) geoBlock.val[q] = 0;
+            geoBlock.val[geoBlock.diag[j]] = 1;
+        }
+        stamp++;
+        activeChainCount = 0;
+        for (int k = 0; k < activeCount; k++) {
+            int j = activeRows[k] - m;
+            for (int t = geoRowStart[j]; t < geoRowStart[j + 1]; t++) if (geoToBlock[t] >= 0) geoBlock.val[geoToBlock[t]] = geoVal[t];
+            int c = geoChains.chainOf(j);
+            if (chainStamp[c] != stamp) { chainStamp[c] = stamp; activeChains[activeChainCount++] = c; }
+        }
+        // Symmetry: an active row's entry in an inactive row was zeroed above and is 0 in geoVal too (zero gradients).
+        geoChains.refresh();
+    }
+
+    /**
+     * The stiffness rows' chains: for each chain of constraint rows c₀, c₁, …, the first stiffness rows
+     * of those constraints in the same order, and the second ones; a constraint without stiffness rows
+     * ends a chain, and any stiffness row left over is a chain of its own.
+     */
+    private int[][] stiffnessChains(ChainSmoother constraintChains) {
+        int g = rows - m;
+        int[] pairOf = new int[m];
+        java.util.Arrays.fill(pairOf, -1);
+        for (int j = 0; j < geometric.count(); j++) pairOf[geometric.constraint[j]] = j;
+        int[] order = new int[g], start = new int[g + 1];
+        boolean[] placed = new boolean[g];
+        int pos = 0, chains = 0;
+        int[] cOrder = constraintChains.order(), cStart = constraintChains.start();
+        for (int c = 0; c + 1 < cStart.length; c++)
+            for (int side = 0; side < 2; side++) {
+                int prev = -1;
+                for (int k = cStart[c]; k < cStart[c + 1]; k++) {
+                    int j = pairOf[cOrder[k]];
+                    if (j < 0) { prev = -1; continue; }
+                    int row = 2 * j + side;
+                    // A new chain wherever the next row does not couple to the last (a constraint without stiffness rows between them).
+                    if (prev < 0 || geoBlock.find(row, prev) < 0) start[chains++] = pos;
+                    order[pos++] = row;
+                    placed[row] = true;
+                    prev = row;
+                }
+            }
+        for (int r = 0; r < g; r++) if (!placed[r]) { start[chains++] = pos; order[pos++] = r; }
+        start[chains] = pos;
+        activeChains = new int[chains];
+        chainStamp = new int[chains];
+        return new int[][] {order, java.util.Arrays.copyOf(start, chains + 1)};
+    }
+
     /** y = A x over the whole system (constraint rows, then the active stiffness rows). */
     private void multiply(double[] x, double[] y) {
         a.multiply(x, y);
@@ -397,8 +486,12 @@ final class GlobalSolver {
      * off with the tension) do not change.
      */
     private void precondition(double[] in, double[] out) {
-        if (multigrid) mg.apply(in, out);
-        else for (int i = 0; i < m; i++) out[i] = in[i] / a.val[a.diag[i]];
+        if (multigrid) {
+            mg.apply(in, out);
+            if (activeCount > 0) geoChains.solveChains(activeChains, activeChainCount, in, out, m);
+            return;
+        }
+        for (int i = 0; i < m; i++) out[i] = in[i] / a.val[a.diag[i]];
         for (int k = 0; k < activeCount; k++) {
             int row = activeRows[k];
             out[row] = in[row] / geoVal[geoDiag[row - m]];

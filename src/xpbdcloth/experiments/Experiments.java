@@ -28,6 +28,7 @@ public final class Experiments implements Callable<Integer> {
         e.add(new MeshIndependence());
         e.add(new FitOnceSimulateAnywhere());
         e.add(new DynamicFitRecovery());
+        e.add(new TautCurtain());
         return e;
     }
 
