@@ -3,18 +3,20 @@ package xpbdcloth.engine;
 import java.util.Arrays;
 
 /**
- * XPBD's constraint system solved for all constraints at once (Macklin et al. 2016, eq. 11–12, the
- * Schur complement of the KKT system): each iteration linearises the constraints at the current
- * positions and solves
+ * XPBD's constraint system for the stretch (the distance constraints, {@link #takes}) solved for all of
+ * them at once (Macklin et al. 2016, eq. 11–12, the Schur complement of the KKT system): each iteration
+ * linearises the constraints at the current positions and solves
  * <pre>
  *   (J W Jᵀ + α̃) Δλ = −C − α̃λ,    then   x += W Jᵀ Δλ,   λ += Δλ
  * </pre>
- * by preconditioned conjugate gradients, with a Jacobi or an aggregation-multigrid preconditioner. One
- * iteration of it is one Newton step of the same system whose Gauss–Seidel sweep is one projection per
- * constraint; Gauss–Seidel reduces local error fast and global error slowly, a global solve does both.
+ * by preconditioned conjugate gradients, with a Jacobi or an aggregation-multigrid preconditioner, the
+ * system widened by two rows per tensioned constraint that carry its geometric stiffness
+ * ({@link GeometricStiffness}: J and W Jᵀ then include them, with a zero right-hand side). One iteration
+ * is one Newton step of the same system whose Gauss–Seidel sweep is one projection per constraint;
+ * Gauss–Seidel reduces local error fast and global error slowly, a global solve does both.
  *
- * <p>The topology (which constraint touches which particle, the sparsity pattern of J W Jᵀ, the
- * multigrid hierarchy) is built once for a set of constraints and reused; each linearisation refills
+ * <p>The topology (which constraint touches which particle, the sparsity patterns, the multigrid
+ * hierarchy and its chains) is built once for a set of constraints and reused; each linearisation refills
  * values in place, so a step allocates nothing.
  */
 final class GlobalSolver {
@@ -368,8 +370,13 @@ final class GlobalSolver {
     /**
      * Fills the stiffness rows of the constraints whose tension matters here: a row pair is active when
      * κ Σ cₖ² wₖ ≥ {@link #SIGNIFICANT}, the geometric stiffness against the masses it moves. Below that
-     * it changes a particle's transverse response by less than 0.1 % and is left out (its rows zero), so
-     * a cloth whose substeps are short next to its tension (h² w T / l small) pays nothing for it.
+     * it changes a particle's transverse response by less than 10 %, far from where leaving it explicit
+     * goes unstable (near 1: a zigzag grows when h² w T / l passes about ½ per edge), and is left out (its
+     * rows zero), so a cloth whose substeps are short next to its tension pays little for it: on
+     * `hanging` (h = 2 ms) about 200 of its 3968 stiffness rows are on, on the 20 ms curtain all.
+     * κ Σ cₖ² wₖ is capped at {@link #STIFFEST}, a bound on how much stiffer than the masses a row may
+     * make the system; a precaution, not a measured need (a featherweight cloth, 1 µg particles, behaved
+     * the same with a cap of 10: what it needed was more CG iterations, now 300 by default).
      */
     private void lineariseStiffness(Particles particles) {
         final double[] w = particles.w;
