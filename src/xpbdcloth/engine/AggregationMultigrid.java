@@ -15,18 +15,21 @@ import java.util.List;
  * scatter map are built once so that refreshing values after each linearisation costs O(nnz). Levels are
  * added until at most {@link #COARSEST} unknowns remain, which are solved by dense Cholesky.
  *
- * <p>The cycle is symmetric (forward Gauss–Seidel before the coarse correction, backward after), as
+ * <p>The cycle is symmetric (a forward sweep before the coarse correction, a backward one after), as
  * conjugate gradients require. For a grid cloth's structural edges, perpendicular edges do not couple
  * (their gradients are orthogonal at rest), so aggregates follow the rows and columns: the hierarchy is
- * then the geometric one along each grid line, which is why it is the same as a geometric multigrid for
- * grid cloth, and needs no grid knowledge.
+ * then the geometric one along each grid line, and needs no grid knowledge. The same fact makes the
+ * finest level's smoother a line smoother ({@link ChainSmoother}): it solves each grid line's chain of
+ * rows exactly, which a point Gauss–Seidel sweep does one row at a time; with it one linear solve takes
+ * one CG iteration at 32² to 256² (31 / 47 / 69 at 32² / 64² / 128² with point smoothing), so the coarse
+ * levels only carry what couples the lines.
  */
 final class AggregationMultigrid {
     static final int COARSEST = 64;
     /** A Cholesky pivot below this fraction of its diagonal counts as zero (semi-definite A). */
     static final double PIVOT_TOLERANCE = 1e-12;
     static final double STRENGTH = 0.25;
-    /** Gauss–Seidel sweeps before and after the coarse correction. */
+    /** Smoothing sweeps before and after the coarse correction (line Gauss–Seidel on the finest level, point Gauss–Seidel below). */
     static final int SMOOTHING = 1;
     /**
      * The coarse correction is scaled up: a piecewise-constant prolongator represents smooth error too

@@ -443,7 +443,7 @@ public final class Simulation {
         return v.toArray(new Constraint[0]);
     }
 
-    /** The cloth constraints the global system takes; the other blocks are swept after each global step. */
+    /** The cloth constraints the global system takes; the other blocks are swept before each global step. */
     private Constraint[] globalViews() {
         List<Constraint> v = new ArrayList<>();
         for (ConstraintBlock b : body) if (GlobalSolver.takes(b)) for (int i = 0; i < b.count(); i++) v.add(b.view(i));
@@ -459,10 +459,10 @@ public final class Simulation {
     /** Conjugate-gradient iterations since the global solver was built. */
     public int totalPcgIterations() { return global == null ? 0 : global.totalIterations(); }
 
-    /** Multigrid levels and setup time (ns) of the global solver, {0, 0} if none. */
     /** Nanoseconds the global solver spent on its setup (once per constraint topology), 0 with Gauss–Seidel. */
     public long globalSetupNanos() { return global == null ? 0 : global.setupNanos(); }
 
+    /** Multigrid levels and setup time (ns) of the global solver, {0, 0} if none. */
     public long[] multigridSetup() { return global == null ? new long[2] : new long[] {global.multigridLevels(), global.multigridSetupNanos()}; }
 
     /** The helper threads for {@code threads} (made once per thread count), or null for one thread. */
