@@ -75,13 +75,22 @@ final class ChainSmoother {
         Arrays.sort(byWeight, (p, q) -> Double.compare(weight[q], weight[p]));
         int[] degree = new int[n], parent = new int[n];
         int[][] next = new int[n][2];
-        for (int i = 0; i < n; i++) { parent[i] = i; next[i][0] = next[i][1] = -1; }
+        // The rows of each path (by its root), merged small into large, to check that a join keeps it induced.
+        int[][] members = new int[n][];
+        int[] size = new int[n];
+        for (int i = 0; i < n; i++) { parent[i] = i; next[i][0] = next[i][1] = -1; members[i] = new int[] {i}; size[i] = 1; }
         for (Integer e : byWeight) {
             int i = (int) (keys[e] >>> 32), j = (int) keys[e];
             if (degree[i] == 2 || degree[j] == 2) continue;
             int ri = root(parent, i), rj = root(parent, j);
             if (ri == rj) continue;
+            if (size[ri] > size[rj]) { int t = ri; ri = rj; rj = t; }
+            if (couplesElsewhere(a, parent, members[ri], size[ri], rj, i, j)) continue;
             parent[ri] = rj;
+            if (size[rj] + size[ri] > members[rj].length) members[rj] = Arrays.copyOf(members[rj], 2 * (size[rj] + size[ri]));
+            System.arraycopy(members[ri], 0, members[rj], size[rj], size[ri]);
+            size[rj] += size[ri];
+            members[ri] = null;
             next[i][degree[i]++] = j;
             next[j][degree[j]++] = i;
         }
@@ -103,6 +112,26 @@ final class ChainSmoother {
         }
         starts[chains] = pos;
         return new int[][] {order, Arrays.copyOf(starts, chains + 1)};
+    }
+
+    /**
+     * Whether a row of one path shares a pattern entry with a row of the path rooted at {@code other},
+     * apart from the joining pair (i, j). Such a pair would be a coupling inside the chain that its
+     * tridiagonal solve leaves out: the chain's block would no longer be solved exactly, and the sweep
+     * can then diverge (three edges of one triangle in one chain gave the V-cycle a negative eigenvalue
+     * and multigrid-PCG stalled on every triangle mesh). The test is on the pattern, not the values, so
+     * that a chain stays exact however the cloth later bends.
+     */
+    private static boolean couplesElsewhere(SparseMatrix a, int[] parent, int[] rows, int count, int other, int i, int j) {
+        for (int t = 0; t < count; t++) {
+            int u = rows[t];
+            for (int k = a.rowStart[u]; k < a.rowStart[u + 1]; k++) {
+                int v = a.col[k];
+                if (v == u || (u == i && v == j) || (u == j && v == i)) continue;
+                if (root(parent, v) == other) return true;
+            }
+        }
+        return false;
     }
 
     private static int root(int[] parent, int i) {
