@@ -55,14 +55,21 @@ final class AggregationMultigrid {
         SparseMatrix a = fine;
         levels.add(a);
         while (a.size > COARSEST) {
-            int[] agg = aggregate(a);
-            int coarse = 0;
-            for (int x : agg) coarse = Math.max(coarse, x + 1);
+            int[] agg = aggregate(a, STRENGTH);
+            int coarse = count(agg);
+            if (coarse >= a.size * 0.9) {
+                // Strong couplings have run out (on a triangle mesh the coarse rows' couplings cancel in
+                // sign): aggregate over all couplings rather than solve a large level densely.
+                agg = aggregate(a, 0);
+                coarse = count(agg);
+            }
             if (coarse >= a.size * 0.9) break; // no real coarsening left
             SparseMatrix c = galerkinPattern(a, agg, coarse);
             aggregateOf.add(agg);
             scatter.add(scatterMap(a, c, agg));
             levels.add(c);
+            // The next level's aggregates are grown from these values (a pattern alone calls every coupling strong).
+            restrict(levels.size() - 2);
             a = c;
         }
         for (SparseMatrix l : levels) {
@@ -79,19 +86,25 @@ final class AggregationMultigrid {
 
     int levelCount() { return levels.size(); }
 
+    /** Unknowns of the coarsest level, solved densely. */
+    int coarsestSize() { return coarseSize; }
+
     /** The finest level's chains (the global solver lays its stiffness rows along them). */
     ChainSmoother chains() { return chains; }
 
     /** Recomputes the coarse values from the fine level's current values (after a linearisation). */
     void refresh() {
         chains.refresh();
-        for (int l = 0; l + 1 < levels.size(); l++) {
-            SparseMatrix f = levels.get(l), c = levels.get(l + 1);
-            Arrays.fill(c.val, 0);
-            int[] map = scatter.get(l);
-            for (int k = 0; k < f.val.length; k++) c.val[map[k]] += f.val[k];
-        }
+        for (int l = 0; l + 1 < levels.size(); l++) restrict(l);
         factorCoarsest();
+    }
+
+    /** Level l+1's values = Pᵀ A P from level l's. */
+    private void restrict(int l) {
+        SparseMatrix f = levels.get(l), c = levels.get(l + 1);
+        Arrays.fill(c.val, 0);
+        int[] map = scatter.get(l);
+        for (int k = 0; k < f.val.length; k++) c.val[map[k]] += f.val[k];
     }
 
     /** z = M⁻¹ r on the fine level's rows (the first ones of r and z): one V-cycle from a zero guess. */
@@ -124,7 +137,13 @@ final class AggregationMultigrid {
         else levels.get(l).gaussSeidel(b, x, forward);
     }
 
-    private static int[] aggregate(SparseMatrix a) {
+    private static int count(int[] agg) {
+        int coarse = 0;
+        for (int x : agg) coarse = Math.max(coarse, x + 1);
+        return coarse;
+    }
+
+    private static int[] aggregate(SparseMatrix a, double strength) {
         int n = a.size;
         int[] agg = new int[n];
         Arrays.fill(agg, -1);
@@ -133,10 +152,10 @@ final class AggregationMultigrid {
         for (int i = 0; i < n; i++) {
             if (agg[i] >= 0) continue;
             boolean free = true;
-            for (int k = a.rowStart[i]; k < a.rowStart[i + 1]; k++) if (strong(a, i, k) && agg[a.col[k]] >= 0) { free = false; break; }
+            for (int k = a.rowStart[i]; k < a.rowStart[i + 1]; k++) if (strong(a, i, k, strength) && agg[a.col[k]] >= 0) { free = false; break; }
             if (!free) continue;
             agg[i] = next;
-            for (int k = a.rowStart[i]; k < a.rowStart[i + 1]; k++) if (strong(a, i, k)) agg[a.col[k]] = next;
+            for (int k = a.rowStart[i]; k < a.rowStart[i + 1]; k++) if (strong(a, i, k, strength)) agg[a.col[k]] = next;
             next++;
         }
         // Phase 2: leftovers join the aggregate of their strongest aggregated neighbour, or stand alone.
@@ -148,19 +167,19 @@ final class AggregationMultigrid {
                 int j = a.col[k];
                 if (j != i && agg[j] >= 0 && Math.abs(a.val[k]) > bestW) { bestW = Math.abs(a.val[k]); best = agg[j]; }
             }
-            agg[i] = best >= 0 && strongAny(a, i) ? best : next++;
+            agg[i] = best >= 0 && strongAny(a, i, strength) ? best : next++;
         }
         return agg;
     }
 
-    private static boolean strong(SparseMatrix a, int i, int k) {
+    private static boolean strong(SparseMatrix a, int i, int k, double strength) {
         int j = a.col[k];
         if (j == i) return false;
-        return Math.abs(a.val[k]) >= STRENGTH * Math.sqrt(a.val[a.diag[i]] * a.val[a.diag[j]]);
+        return Math.abs(a.val[k]) >= strength * Math.sqrt(a.val[a.diag[i]] * a.val[a.diag[j]]);
     }
 
-    private static boolean strongAny(SparseMatrix a, int i) {
-        for (int k = a.rowStart[i]; k < a.rowStart[i + 1]; k++) if (strong(a, i, k)) return true;
+    private static boolean strongAny(SparseMatrix a, int i, double strength) {
+        for (int k = a.rowStart[i]; k < a.rowStart[i + 1]; k++) if (strong(a, i, k, strength)) return true;
         return false;
     }
 

@@ -257,6 +257,7 @@ final class GlobalSolver {
     /** The whole setup, once per constraint topology: patterns and pair maps, and the multigrid hierarchy. */
     long setupNanos() { return patternNanos + multigridSetupNanos(); }
     int multigridLevels() { return mg == null ? 0 : mg.levelCount(); }
+    int multigridCoarsestSize() { return mg == null ? 0 : mg.coarsestSize(); }
 
     /**
      * One global iteration: linearise, solve for Δλ, then move the particles by x += s·W JᵀΔλ and
@@ -592,6 +593,12 @@ final class GlobalSolver {
         System.arraycopy(v, 0, out, 0, m);
         for (int k = 0; k < activeCount; k++) out[m + k] = v[activeRows[k]];
         return out;
+    }
+
+    /** Linearises and solves without moving anything (tests that need the hierarchy, not the matrix). */
+    void linearSystemForTestWithoutDense(Particles particles, SolverContext ctx) {
+        linearise(particles, ctx);
+        solve();
     }
 
     /** Linearises and solves without moving anything: returns {A, b, Δλ} for tests. */
