@@ -29,6 +29,7 @@ public final class Experiments implements Callable<Integer> {
         e.add(new FitOnceSimulateAnywhere());
         e.add(new DynamicFitRecovery());
         e.add(new TautCurtain());
+        e.add(new MultigridOnTriangles());
         return e;
     }
 

@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import xpbdcloth.mesh.ClothMesh;
+import xpbdcloth.mesh.SquareSheet;
 
 /**
  * The multigrid preconditioner on triangle meshes, where edges meet at 45° and 90° and a chain of
@@ -17,29 +18,18 @@ import xpbdcloth.mesh.ClothMesh;
  */
 class MultigridOnTriangleMeshesTest {
 
-    /** A res² sheet of right triangles, 1 m square, structural edges only, top row pinned, positions jittered. */
+    /** A res² sheet of right triangles ({@link SquareSheet}), structural edges only, row 0 pinned, free vertices jittered by 5 % of an edge. */
     static Cloth triangleSheet(int res, boolean alternatingDiagonals, double compliance, long seed) {
-        double[] pos = new double[3 * res * res];
-        double h = 1.0 / (res - 1);
+        ClothMesh mesh = SquareSheet.generate(res, alternatingDiagonals ? SquareSheet.Cells.ALTERNATING : SquareSheet.Cells.DIAGONAL);
+        double[] pos = mesh.positions();
+        double jitter = 0.05 / (res - 1);
         Random rnd = new Random(seed);
-        for (int r = 0; r < res; r++)
-            for (int c = 0; c < res; c++) {
-                int i = r * res + c;
-                double jitter = r == 0 ? 0 : 0.05 * h;
-                pos[3 * i] = -0.5 + c * h + jitter * (rnd.nextDouble() - 0.5);
-                pos[3 * i + 1] = 1 + jitter * (rnd.nextDouble() - 0.5);
-                pos[3 * i + 2] = -0.5 + r * h + jitter * (rnd.nextDouble() - 0.5);
-            }
-        List<int[]> faces = new ArrayList<>();
-        for (int r = 0; r + 1 < res; r++)
-            for (int c = 0; c + 1 < res; c++) {
-                int a = r * res + c, b = a + 1, d = a + res, e = d + 1;
-                if (!alternatingDiagonals || ((r + c) & 1) == 0) { faces.add(new int[] {a, b, e}); faces.add(new int[] {a, e, d}); }
-                else { faces.add(new int[] {a, b, d}); faces.add(new int[] {b, e, d}); }
-            }
+        for (int i = 3 * res; i < pos.length; i++) pos[i] += jitter * (rnd.nextDouble() - 0.5);
         int[] top = new int[res];
         for (int c = 0; c < res; c++) top[c] = c;
-        return new MeshClothBuilder(ClothMesh.of(pos, faces.toArray(new int[0][]), null, null, null)).arealDensity(0.2)
+        int[][] faces = new int[mesh.faceCount()][];
+        for (int k = 0; k < faces.length; k++) faces[k] = mesh.face(k);
+        return new MeshClothBuilder(ClothMesh.of(pos, faces, null, null, null)).arealDensity(0.2)
                 .family(ConstraintFamily.STRUCTURAL, 1, compliance).withoutFamily(ConstraintFamily.SHEAR).withoutFamily(ConstraintFamily.BEND)
                 .pin(top).build();
     }
