@@ -13,6 +13,8 @@ import xpbdcloth.engine.Box;
 import xpbdcloth.engine.Capsule;
 import xpbdcloth.engine.Cloth;
 import xpbdcloth.engine.ClothBuilder;
+import xpbdcloth.engine.MeshClothBuilder;
+import xpbdcloth.mesh.ClothMesh;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.ConstraintMode;
 import xpbdcloth.engine.EngineRange;
@@ -50,7 +52,7 @@ public final class Fuzz implements Callable<Integer> {
         String[] illegal = r.nextInt(10) == 0 ? pickIllegal(r) : null;
         Simulation sim = null;
         try {
-            sim = build(r, illegal, solver);
+            sim = build(r, illegal, solver, drawsTriangles(seed));
             SolverSettings s = sim.settings();
             AttachmentConstraint grab = null;
             int steps = 10 + r.nextInt(40);
@@ -92,6 +94,9 @@ public final class Fuzz implements Callable<Integer> {
             if (sim != null) sim.close(); // a failed case must not leave its helper threads behind
         }
     }
+
+    /** One case in three is a triangle mesh, decided apart from the case's own draws so that they stay the seed's. */
+    static boolean drawsTriangles(long seed) { return new Random(~seed).nextInt(3) == 0; }
 
     /** Whether particle i is within the engine's position range (so a grab target there is legal). */
     private static boolean inRange(xpbdcloth.engine.Particles p, int i) {
@@ -151,24 +156,41 @@ public final class Fuzz implements Callable<Integer> {
         return illegal != null && illegal[0].equals(name) ? Double.parseDouble(illegal[1]) : good;
     }
 
-    static Simulation build(Random r, String[] illegal, SolverType forced) {
+    static Simulation build(Random r, String[] illegal, SolverType forced) { return build(r, illegal, forced, false); }
+
+    /**
+     * {@code triangles}: a cloth with area and no illegal parameter is built as a triangle mesh (the same
+     * grid's triangles through {@link MeshClothBuilder}, the same families, pins and density) instead of
+     * a grid; every other draw is the same, so a seed's grid case and its triangle case differ only there.
+     */
+    static Simulation build(Random r, String[] illegal, SolverType forced, boolean triangles) {
         int columns = 1 + r.nextInt(12), rows = 2 + r.nextInt(11);
         double width = r.nextInt(10) == 0 ? 0 : 2 * r.nextDouble(), height = r.nextInt(10) == 0 ? 0 : 2 * r.nextDouble();
         ClothBuilder b = new ClothBuilder().resolution(columns, rows).size(width, height)
                 .plane(r.nextBoolean() ? ClothBuilder.Plane.VERTICAL : ClothBuilder.Plane.HORIZONTAL)
-                .origin(r.nextGaussian(), 1 + r.nextDouble(), r.nextGaussian())
-                .arealDensity(bad(illegal, "arealDensity", logUniform(r, 1e-3, 10)));
+                .origin(r.nextGaussian(), 1 + r.nextDouble(), r.nextGaussian());
+        double density = bad(illegal, "arealDensity", logUniform(r, 1e-3, 10));
+        b.arealDensity(density);
         // A zero-area cloth (all particles on a line or a point) has no area to spread a density over.
-        if ((columns > 1 && width == 0) || (rows > 1 && height == 0)) b.totalMass(logUniform(r, 1e-3, 10));
+        boolean flat = (columns > 1 && width == 0) || (rows > 1 && height == 0);
+        if (flat) b.totalMass(logUniform(r, 1e-3, 10));
+        boolean asTriangles = triangles && illegal == null && !flat && columns > 1 && rows > 1;
+        MeshClothBuilder mb = asTriangles ? new MeshClothBuilder(trianglesOf(b.mesh())).arealDensity(density) : null;
         for (ConstraintFamily f : new ConstraintFamily[] {ConstraintFamily.STRUCTURAL, ConstraintFamily.SHEAR, ConstraintFamily.BEND}) {
             if (f != ConstraintFamily.STRUCTURAL && r.nextBoolean()) continue;
             double alpha = r.nextInt(5) == 0 ? 0 : logUniform(r, 1e-10, 1e3);
-            b.family(f, bad(illegal, "stiffness", r.nextDouble()), bad(illegal, "compliance", alpha));
+            double k = bad(illegal, "stiffness", r.nextDouble());
+            b.family(f, k, bad(illegal, "compliance", alpha));
+            if (mb != null) mb.family(f, k, alpha);
         }
         int pins = r.nextInt(5);
-        for (int k = 0; k < pins; k++) b.pin(r.nextInt(rows), r.nextInt(columns));
+        for (int k = 0; k < pins; k++) {
+            int row = r.nextInt(rows), col = r.nextInt(columns);
+            b.pin(row, col);
+            if (mb != null) mb.pin(row * columns + col);
+        }
         if (illegal != null && illegal[0].equals("pin row")) b.pin(99, 0);
-        Cloth cloth = b.build();
+        Cloth cloth = mb != null ? mb.build() : b.build();
         Particles p = cloth.particles();
         if (r.nextInt(4) == 0) for (int i = 0; i < p.count(); i++) p.setMass(i, logUniform(r, 1e-6, 1e3));
         if (illegal != null && illegal[0].equals("mass")) p.setMass(0, -1);
@@ -220,6 +242,14 @@ public final class Fuzz implements Callable<Integer> {
         if (illegal != null && illegal[0].equals("radius") && spheres == 0) new Sphere(SpherePath.fixed(0, 0, 0), 0, 0, 0, 0);
         if (illegal != null && illegal[0].equals("staticFriction") && spheres == 0) new Sphere(SpherePath.fixed(0, 0, 0), 1, 0, -0.5, 0);
         return sim;
+    }
+
+    /** The mesh's triangles as its faces: a grid's quads become a triangle mesh of the same vertices. */
+    static ClothMesh trianglesOf(ClothMesh grid) {
+        int[] t = grid.triangles();
+        int[][] faces = new int[t.length / 3][];
+        for (int k = 0; k < faces.length; k++) faces[k] = new int[] {t[3 * k], t[3 * k + 1], t[3 * k + 2]};
+        return ClothMesh.of(grid.positions(), faces, null, null, null);
     }
 
     @Option(names = "--cases", description = "number of cases per solver (1 to 10 000 000)", defaultValue = "1000")

@@ -54,6 +54,34 @@ class RobustnessCommandsTest {
         assertTrue(threads >= 3 && threads <= 20, "two threads in about one case of ten: " + threads);
     }
 
+    static int structural(xpbdcloth.engine.Simulation sim) {
+        int n = 0;
+        for (xpbdcloth.engine.Constraint c : sim.constraints()) if (c.family() == xpbdcloth.engine.ConstraintFamily.STRUCTURAL) n++;
+        return n;
+    }
+
+    /**
+     * One case in three is a triangle mesh (the global solvers had never been fuzzed on one, and the
+     * multigrid was broken there): the same draws, more structural edges (the diagonals).
+     */
+    @Test
+    void theFuzzerDrawsTriangleMeshes() {
+        int drawn = 0, meshes = 0;
+        for (long seed = 1; seed <= 300; seed++) {
+            if (!Fuzz.drawsTriangles(seed)) continue;
+            drawn++;
+            xpbdcloth.engine.Simulation grid = Fuzz.build(new java.util.Random(seed), null, SolverType.GAUSS_SEIDEL, false);
+            xpbdcloth.engine.Simulation mesh = Fuzz.build(new java.util.Random(seed), null, SolverType.GAUSS_SEIDEL, true);
+            int gridEdges = structural(grid), meshEdges = structural(mesh);
+            assertEquals(grid.particles().count(), mesh.particles().count(), "seed " + seed + ": the same vertices");
+            if (meshEdges > gridEdges) meshes++;
+            grid.close();
+            mesh.close();
+        }
+        assertTrue(drawn >= 70 && drawn <= 130, "a triangle mesh in about one case of three: " + drawn + " of 300");
+        assertTrue(meshes >= drawn / 2, "cases that are really triangle meshes (some have no area): " + meshes + " of " + drawn);
+    }
+
     @Test
     void fuzzPresets() {
         StringBuilder failures = new StringBuilder();
