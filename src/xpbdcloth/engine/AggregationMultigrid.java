@@ -9,11 +9,13 @@ import java.util.List;
  * used as the preconditioner of conjugate gradients (MGPBD, Li et al. 2025, after Vaněk et al.).
  *
  * <p>Setup (once per constraint topology, "lazy"): constraints i, j are strongly connected when
- * |A_ij| ≥ θ √(A_ii A_jj) with θ = 0.25; aggregates are grown greedily (a seed and its strong
- * neighbours, then leftovers join a neighbouring aggregate); the prolongator P is the binary map from a
- * constraint to its aggregate; coarse operators are Galerkin products A_c = Pᵀ A P, whose pattern and
- * scatter map are built once so that refreshing values after each linearisation costs O(nnz). Levels are
- * added until at most {@link #COARSEST} unknowns remain, which are solved by dense Cholesky.
+ * |A_ij| ≥ θ √(A_ii A_jj) with θ = 0.25 (θ = 0, every coupling, where that would shrink a level by
+ * less than 10 %: aggressive coarsening as a fallback); aggregates are grown greedily (a seed and its
+ * strong neighbours, then leftovers join a neighbouring aggregate), each level's from its own values;
+ * the prolongator P is the binary map from a constraint to its aggregate; coarse operators are Galerkin
+ * products A_c = Pᵀ A P, whose pattern and scatter map are built once so that refreshing values after
+ * each linearisation costs O(nnz). Levels are added until at most {@link #COARSEST} unknowns remain,
+ * which are solved by dense Cholesky.
  *
  * <p>The cycle is symmetric (a forward sweep before the coarse correction, a backward one after), as
  * conjugate gradients require. For a grid cloth's structural edges, perpendicular edges do not couple
@@ -21,8 +23,12 @@ import java.util.List;
  * then the geometric one along each grid line, and needs no grid knowledge. The same fact makes the
  * finest level's smoother a line smoother ({@link ChainSmoother}): it solves each grid line's chain of
  * rows exactly, which a point Gauss–Seidel sweep does one row at a time; with it one linear solve takes
- * one CG iteration at 32² to 256² (31 / 47 / 69 at 32² / 64² / 128² with point smoothing), so the coarse
- * levels only carry what couples the lines.
+ * one CG iteration at 32² to 256² on a flat grid (31 / 47 / 69 at 32² / 64² / 128² with point smoothing)
+ * and 5–6 on a crumpled one, so the coarse levels only carry what couples the lines.
+ *
+ * <p>On a triangle mesh of hard edges it is no better than a diagonal: the edges outnumber the in-plane
+ * degrees of freedom, A equals α̃ on their self-stresses (Jᵀ Δλ = 0), a space about as large as the mesh,
+ * which neither a smoother nor a coarse space reaches (README, experiment 12).
  */
 final class AggregationMultigrid {
     static final int COARSEST = 64;

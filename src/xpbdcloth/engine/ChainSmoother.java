@@ -16,8 +16,10 @@ import java.util.Arrays;
  * coarse levels.
  *
  * <p>Chains (built once per pattern, from the first values): couplings with |A_ij| ≥ θ √(A_ii A_jj) are
- * taken strongest first when neither end has two chain neighbours yet and they close no cycle (a greedy
- * maximum-weight path cover). Values are refactored in place after each linearisation.
+ * taken strongest first when neither end has two chain neighbours yet, they close no cycle, and no other
+ * row of the one path shares an entry with the other (a greedy maximum-weight cover by induced paths:
+ * each chain's block of A is then exactly tridiagonal, and a sweep is block Gauss–Seidel, convergent for
+ * any symmetric positive-definite A). Values are refactored in place after each linearisation.
  */
 final class ChainSmoother {
     static final double STRENGTH = 0.25;
