@@ -33,6 +33,12 @@ final class ChainSmoother {
     private final int[] chainOf;
     /** Thomas factors: pivot d and multiplier l per position; rhs scratch. */
     private final double[] pivot, lower, y;
+    /**
+     * Per chain position k, the couplings of its row outside its chain (all but the diagonal and the two
+     * chain neighbours), {@code outside[outsideStart[k] ..]}: positions in a.val; {@code outsideCol}: their
+     * columns. Listed once, so that a sweep's right-hand side is a plain dot product.
+     */
+    private final int[] outsideStart, outside, outsideCol;
 
     /** Chains along A's strongest couplings. */
     ChainSmoother(SparseMatrix a) {
@@ -55,6 +61,28 @@ final class ChainSmoother {
         pivot = new double[n];
         lower = new double[n];
         y = new double[n];
+        outsideStart = new int[n + 1];
+        listOutside(null, null); // counts into outsideStart
+        outside = new int[outsideStart[n]];
+        outsideCol = new int[outsideStart[n]];
+        listOutside(outside, outsideCol);
+    }
+
+    /** Fills {@link #outsideStart} (and, given arrays, the entries) for every chain position. */
+    private void listOutside(int[] entries, int[] cols) {
+        int count = 0;
+        for (int c = 0; c + 1 < start.length; c++)
+            for (int k = start[c]; k < start[c + 1]; k++) {
+                int i = order[k];
+                int prevRow = k > start[c] ? order[k - 1] : -1, nextRow = k + 1 < start[c + 1] ? order[k + 1] : -1;
+                for (int q = a.rowStart[i]; q < a.rowStart[i + 1]; q++) {
+                    int j = a.col[q];
+                    if (j == i || j == prevRow || j == nextRow) continue;
+                    if (entries != null) { entries[count] = q; cols[count] = j; }
+                    count++;
+                }
+                outsideStart[k + 1] = count;
+            }
     }
 
     /** {order, start}: a greedy maximum-weight path cover of the strong couplings (see the class comment). */
@@ -173,14 +201,10 @@ final class ChainSmoother {
             int c = forward ? t : chains - 1 - t;
             int from = start[c], to = start[c + 1];
             // Right-hand side: b minus the couplings outside the chain (the chain's own ones are in the factor).
+            final double[] val = a.val;
             for (int k = from; k < to; k++) {
-                int i = order[k];
-                double s = b[i];
-                int prevRow = k > from ? order[k - 1] : -1, nextRow = k + 1 < to ? order[k + 1] : -1;
-                for (int q = a.rowStart[i]; q < a.rowStart[i + 1]; q++) {
-                    int j = a.col[q];
-                    if (j != i && j != prevRow && j != nextRow) s -= a.val[q] * x[j];
-                }
+                double s = b[order[k]];
+                for (int q = outsideStart[k]; q < outsideStart[k + 1]; q++) s -= val[outside[q]] * x[outsideCol[q]];
                 y[k] = s;
             }
             for (int k = from + 1; k < to; k++) y[k] -= lower[k] * y[k - 1];
