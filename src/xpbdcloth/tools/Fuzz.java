@@ -13,11 +13,10 @@ import xpbdcloth.engine.Box;
 import xpbdcloth.engine.Capsule;
 import xpbdcloth.engine.Cloth;
 import xpbdcloth.engine.ClothBuilder;
-import xpbdcloth.engine.MeshClothBuilder;
-import xpbdcloth.mesh.ClothMesh;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.ConstraintMode;
 import xpbdcloth.engine.EngineRange;
+import xpbdcloth.engine.MeshClothBuilder;
 import xpbdcloth.engine.Metrics;
 import xpbdcloth.engine.Particles;
 import xpbdcloth.engine.Simulation;
@@ -27,6 +26,7 @@ import xpbdcloth.engine.SolverType;
 import xpbdcloth.engine.Sphere;
 import xpbdcloth.engine.SpherePath;
 import xpbdcloth.engine.Wind;
+import xpbdcloth.mesh.ClothMesh;
 
 /**
  * Seeded random simulations: sizes, pins, families, k, α, iterations, substeps, dt, damping, masses from
