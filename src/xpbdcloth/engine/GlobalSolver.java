@@ -596,15 +596,14 @@ final class GlobalSolver {
     }
 
     /** Linearises and solves without moving anything (tests that need the hierarchy, not the matrix). */
-    void linearSystemForTestWithoutDense(Particles particles, SolverContext ctx) {
+    void linearSolveForTest(Particles particles, SolverContext ctx) {
         linearise(particles, ctx);
         solve();
     }
 
     /** Linearises and solves without moving anything: returns {A, b, Δλ} for tests. */
     double[][][] linearSystemForTest(Particles particles, SolverContext ctx) {
-        linearise(particles, ctx);
-        solve();
+        linearSolveForTest(particles, ctx);
         return new double[][][] {denseMatrix(), {packed(b)}, {packed(dl)}};
     }
 }

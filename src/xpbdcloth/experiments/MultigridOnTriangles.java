@@ -11,6 +11,7 @@ import xpbdcloth.engine.Particles;
 import xpbdcloth.engine.Simulation;
 import xpbdcloth.engine.SolverSettings;
 import xpbdcloth.engine.SolverType;
+import xpbdcloth.mesh.ClothMesh;
 import xpbdcloth.mesh.SquareSheet;
 
 /**
@@ -36,11 +37,10 @@ final class MultigridOnTriangles implements Experiment {
      */
     static Simulation swung(String kind, int res, SolverType type) {
         SquareSheet.Cells cells = kind.equals("diagonal") ? SquareSheet.Cells.DIAGONAL : kind.equals("alternating") ? SquareSheet.Cells.ALTERNATING : SquareSheet.Cells.QUADS;
-        int[] edge = new int[res];
-        for (int c = 0; c < res; c++) edge[c] = c;
-        Cloth cloth = new MeshClothBuilder(SquareSheet.generate(res, cells)).arealDensity(0.2)
+        ClothMesh mesh = SquareSheet.generate(res, cells);
+        Cloth cloth = new MeshClothBuilder(mesh).arealDensity(0.2)
                 .family(ConstraintFamily.STRUCTURAL, 1, COMPLIANCE).withoutFamily(ConstraintFamily.SHEAR).withoutFamily(ConstraintFamily.BEND)
-                .pin(edge).build();
+                .pin(mesh.group("edge")).build();
         double h = 1.0 / (res - 1);
         Particles p = cloth.particles();
         java.util.Random random = new java.util.Random(1);
