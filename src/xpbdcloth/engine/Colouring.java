@@ -3,8 +3,8 @@ package xpbdcloth.engine;
 import java.util.List;
 
 /**
- * Greedy graph colouring of the constraints of some blocks, taken in order (block by block, index by
- * index): each constraint gets the smallest colour that no earlier constraint sharing one of its
+ * Greedy graph colouring of the units (what one projection solves: a constraint, or a triangle's rows)
+ * of some blocks, taken in order (block by block, index by index): each unit gets the smallest colour that no earlier constraint sharing one of its
  * particles has. Within a colour the original order is kept, so the result is deterministic, and a
  * colour's constraints, sharing no particle, can be projected in any order or on any number of threads
  * with the same result. Built when the set of constraints changes, never during a step.
@@ -12,7 +12,7 @@ import java.util.List;
 final class Colouring {
     final List<ConstraintBlock> blocks;
     final int colours;
-    /** For block b: its constraint indices grouped by colour; colour c is order[b][start[b][c] .. start[b][c + 1]). */
+    /** For block b: its unit indices grouped by colour; colour c is order[b][start[b][c] .. start[b][c + 1]). */
     final int[][] order, start;
 
     private Colouring(List<ConstraintBlock> blocks, int colours, int[][] order, int[][] start) {
@@ -29,9 +29,9 @@ final class Colouring {
         int colours = 0;
         for (int b = 0; b < blocks.size(); b++) {
             ConstraintBlock block = blocks.get(b);
-            colourOf[b] = new int[block.count()];
-            for (int i = 0; i < block.count(); i++) {
-                int c = 0;
+            colourOf[b] = new int[block.units()];
+            for (int u = 0; u < block.units(); u++) {
+                int i = u * block.rowsPerUnit(), c = 0;
                 search:
                 while (true) {
                     for (int k = 0; k < block.arity(); k++) if (isSet(usedBy[block.particle(i, k)], c)) { c++; continue search; }
@@ -41,7 +41,7 @@ final class Colouring {
                     int p = block.particle(i, k);
                     usedBy[p] = set(usedBy[p], c);
                 }
-                colourOf[b][i] = c;
+                colourOf[b][u] = c;
                 colours = Math.max(colours, c + 1);
             }
         }

@@ -90,8 +90,8 @@ public abstract class Constraint {
      */
     public final void gradient(Particles p, double[] out) { block.gradient(index, p, out); }
 
-    /** One projection of this constraint in the context's mode. */
-    final void project(Particles p, SolverContext ctx) { block.project(index, p, ctx); }
+    /** One projection of this constraint (with the rows it is solved with) in the context's mode. */
+    final void project(Particles p, SolverContext ctx) { block.project(index / block.rowsPerUnit(), p, ctx); }
 
     /** Resets the λ of this constraint's whole block and refreshes its k' (tests of a lone constraint). */
     final void beginSubstep(SolverContext ctx) { block.beginSubstep(ctx); }

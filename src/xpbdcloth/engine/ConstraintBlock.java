@@ -22,6 +22,8 @@ import java.util.Arrays;
 public abstract class ConstraintBlock {
     private final ConstraintFamily family;
     private final int arity;
+    /** Rows solved together in one projection (a unit): 1, or a triangle's three membrane rows, a bend's three components. */
+    private final int rowsPerUnit;
     int count;
     /** Particle indices, {@link #arity} per constraint. */
     int[] particles;
@@ -35,18 +37,27 @@ public abstract class ConstraintBlock {
     /** The simulation this block is solved in, or null. */
     Simulation owner;
 
-    ConstraintBlock(ConstraintFamily family, int arity, int capacity) {
+    ConstraintBlock(ConstraintFamily family, int arity, int capacity) { this(family, arity, 1, capacity); }
+
+    /** A block whose projections each solve {@code rowsPerUnit} consecutive rows on the same particles together. */
+    ConstraintBlock(ConstraintFamily family, int arity, int rowsPerUnit, int capacity) {
         if (family == null) throw new IllegalArgumentException("family must not be null, was null");
         this.family = family;
         this.arity = arity;
+        this.rowsPerUnit = rowsPerUnit;
         particles = new int[arity * Math.max(capacity, 1)];
         lambda = new double[Math.max(capacity, 1)];
     }
 
     public final ConstraintFamily family() { return family; }
+    /** Scalar constraints (rows) in the block. */
     public final int count() { return count; }
     /** Particles per constraint. */
     public final int arity() { return arity; }
+    /** Rows projected together ({@link #project} takes a unit): 1 for a scalar constraint. */
+    public final int rowsPerUnit() { return rowsPerUnit; }
+    /** Units in the block: what a sweep projects, one at a time; a unit's rows are consecutive and share particles. */
+    public final int units() { return count / rowsPerUnit; }
     /** The k-th particle (0 ≤ k &lt; arity) of constraint i. */
     public final int particle(int i, int k) { return particles[arity * i + k]; }
     public final double lambda(int i) { return lambda[i]; }
@@ -104,13 +115,16 @@ public abstract class ConstraintBlock {
     /** ∇C of constraint i, three components per particle in {@link #particle} order; zeros where C has none. */
     public abstract void gradient(int i, Particles p, double[] out);
 
-    /** One projection of constraint i in the context's mode: the kind's maths, written once. */
-    abstract void project(int i, Particles p, SolverContext ctx);
+    /**
+     * One projection of unit u (rows u·{@link #rowsPerUnit} … on, solved together) in the context's mode:
+     * the kind's maths, written once.
+     */
+    abstract void project(int u, Particles p, SolverContext ctx);
 
-    /** Projects constraints from..to−1 in index order (a loop of its own per kind, so {@link #project} inlines). */
+    /** Projects units from..to−1 in index order (a loop of its own per kind, so {@link #project} inlines). */
     abstract void projectRange(int from, int to, Particles p, SolverContext ctx);
 
-    /** Projects order[from..to−1] (the coloured order). */
+    /** Projects units order[from..to−1] (the coloured order). */
     abstract void projectListed(int[] order, int from, int to, Particles p, SolverContext ctx);
 
     /** A view of constraint i. */

@@ -17,11 +17,12 @@ import java.util.Arrays;
  *       ∂γ/∂x₁ = D⁻¹₀₀ f_v + D⁻¹₀₁ f_u,  ∂γ/∂x₂ = D⁻¹₁₀ f_v + D⁻¹₁₁ f_u;  ∂/∂x₀ = −(∂/∂x₁ + ∂/∂x₂)
  *   ∇C_r = Σ_k L_kr ∇ε_k
  * </pre>
- * Why three scalar rows and not one constraint with a 3×3 compliance block: the Cholesky factor turns
- * the coupled block into rows with the same scalar compliance, so each row is an ordinary XPBD
- * constraint (one λ, the shared Δλ of {@link Constraint#deltaLambda}, every solver including the global
- * one), and the energy, hence XPBD's equilibrium, is exactly the block's. Gauss–Seidel over the rows
- * converges to it a little more slowly than a 3×3 solve per triangle would.
+ * Why three rows: the Cholesky factor turns the coupled block into rows with one scalar compliance each,
+ * so each row is an ordinary XPBD constraint row (its own λ, evaluated and differentiated alone: the
+ * global solver, the fit and the residual take rows), and the energy, hence XPBD's equilibrium, is
+ * exactly the block's. A projection solves a triangle's three rows together ({@link #project}), the
+ * block form of Macklin et al. 2016, eq. 11: F is computed once, and the rows no longer undo each other
+ * in turn, so a sweep converges further than three scalar projections would.
  * Sources: the constitutive model is the textbook orthotropic plane-stress law (e.g. Jones, "Mechanics of
  * Composite Materials", ch. 2); strain energy as XPBD constraints with compliance the inverse stiffness:
  * Macklin, Müller, Chentanez 2016, "XPBD", §4 and §6; the Green-strain triangle as in Müller, Chentanez,
@@ -38,7 +39,7 @@ public final class MembraneBlock extends ConstraintBlock {
     double[] area;
 
     public MembraneBlock(ConstraintFamily family, int triangleCapacity) {
-        super(family, 3, 3 * Math.max(triangleCapacity, 1));
+        super(family, 3, 3, 3 * Math.max(triangleCapacity, 1));
         restInverse = new double[4 * lambda.length];
         row = new double[3 * lambda.length];
         area = new double[lambda.length];
@@ -167,35 +168,77 @@ public final class MembraneBlock extends ConstraintBlock {
         }
     }
 
-    @Override void project(int i, Particles p, SolverContext ctx) {
-        final double[] x = p.x;
+    /**
+     * One projection of triangle t: its three rows solved together (Macklin et al. 2016, eq. 11 for one
+     * triangle; Gauss–Seidel over triangles), so a triangle's rows no longer undo each other in turn and
+     * its deformation gradient is computed once, not three times.
+     * <pre>
+     *   g_{r,v} = a_v gu_r + b_v gv_r     (a, b) = (−P−R, −Q−S), (P, Q), (R, S) for x₀, x₁, x₂
+     *   A_rs = Σ_v w_v g_{r,v}·g_{s,v} = W_aa gu_r·gu_s + W_ab (gu_r·gv_s + gv_r·gu_s) + W_bb gv_r·gv_s   (+ α̃_r on the diagonal)
+     *   A Δλ = −C − α̃λ (XPBD) or −k'C (PBD),   Δx_v = w_v (a_v Σ_r Δλ_r gu_r + b_v Σ_r Δλ_r gv_r)
+     * </pre>
+     * A is solved by LDLᵀ; a row whose pivot vanishes (nothing can move it) takes Δλ = 0.
+     */
+    @Override void project(int t, Particles p, SolverContext ctx) {
+        final double[] x = p.x, w = p.w;
+        final int i = 3 * t;
         final int i0 = particles[3 * i], i1 = particles[3 * i + 1], i2 = particles[3 * i + 2];
         final int a = 3 * i0, b = 3 * i1, c = 3 * i2;
         final double P = restInverse[4 * i], Q = restInverse[4 * i + 1], R = restInverse[4 * i + 2], S = restInverse[4 * i + 3];
-        final double r0 = row[3 * i], r1 = row[3 * i + 1], r2 = row[3 * i + 2];
         double e1x = x[b] - x[a], e1y = x[b + 1] - x[a + 1], e1z = x[b + 2] - x[a + 2];
         double e2x = x[c] - x[a], e2y = x[c + 1] - x[a + 1], e2z = x[c + 2] - x[a + 2];
         double fux = e1x * P + e2x * R, fuy = e1y * P + e2y * R, fuz = e1z * P + e2z * R;
         double fvx = e1x * Q + e2x * S, fvy = e1y * Q + e2y * S, fvz = e1z * Q + e2z * S;
-        double euu = 0.5 * (fux * fux + fuy * fuy + fuz * fuz - 1), evv = 0.5 * (fvx * fvx + fvy * fvy + fvz * fvz - 1);
-        double gamma = fux * fvx + fuy * fvy + fuz * fvz;
-        double C = r0 * euu + r1 * evv + r2 * gamma;
-        double gux = r0 * fux + r2 * fvx, guy = r0 * fuy + r2 * fvy, guz = r0 * fuz + r2 * fvz;
-        double gvx = r1 * fvx + r2 * fux, gvy = r1 * fvy + r2 * fuy, gvz = r1 * fvz + r2 * fuz;
-        double g1x = P * gux + Q * gvx, g1y = P * guy + Q * gvy, g1z = P * guz + Q * gvz;
-        double g2x = R * gux + S * gvx, g2y = R * guy + S * gvy, g2z = R * guz + S * gvz;
-        double g0x = -g1x - g2x, g0y = -g1y - g2y, g0z = -g1z - g2z;
-        double w0 = p.w[i0], w1 = p.w[i1], w2 = p.w[i2];
-        double wGradSq = w0 * (g0x * g0x + g0y * g0y + g0z * g0z) + w1 * (g1x * g1x + g1y * g1y + g1z * g1z) + w2 * (g2x * g2x + g2y * g2y + g2z * g2z);
-        double dLambda = deltaLambda(i, C, wGradSq, ctx);
-        double s0 = w0 * dLambda, s1 = w1 * dLambda, s2 = w2 * dLambda;
-        x[a] += s0 * g0x; x[a + 1] += s0 * g0y; x[a + 2] += s0 * g0z;
-        x[b] += s1 * g1x; x[b + 1] += s1 * g1y; x[b + 2] += s1 * g1z;
-        x[c] += s2 * g2x; x[c + 1] += s2 * g2y; x[c + 2] += s2 * g2z;
+        double uu = fux * fux + fuy * fuy + fuz * fuz, vv = fvx * fvx + fvy * fvy + fvz * fvz, uv = fux * fvx + fuy * fvy + fuz * fvz;
+        double euu = 0.5 * (uu - 1), evv = 0.5 * (vv - 1);
+        final double w0 = w[i0], w1 = w[i1], w2 = w[i2];
+        final double a0 = -P - R, b0 = -Q - S;
+        final double waa = w0 * a0 * a0 + w1 * P * P + w2 * R * R;
+        final double wab = w0 * a0 * b0 + w1 * P * Q + w2 * R * S;
+        final double wbb = w0 * b0 * b0 + w1 * Q * Q + w2 * S * S;
+        // The rows are Lᵀ's (setMaterial writes no other): r₀ = (l₀₀, l₁₀, 0), r₁ = (0, l₁₁, 0), r₂ = (0, 0, l₂₂).
+        // Row r's gradient at vertex v is a_v gu_r + b_v gv_r with gu_r = r₀ f_u + r₂ f_v and gv_r = r₂ f_u + r₁ f_v,
+        // so every A_rs is a combination of the Gram entries uu, uv, vv.
+        final double l00 = row[3 * i], l10 = row[3 * i + 1], l11 = row[3 * i + 4], l22 = row[3 * i + 8];
+        double C0 = l00 * euu + l10 * evv, C1 = l11 * evv, C2 = l22 * uv;
+        double A00 = waa * l00 * l00 * uu + 2 * wab * l00 * l10 * uv + wbb * l10 * l10 * vv;
+        double A01 = l11 * (wab * l00 * uv + wbb * l10 * vv);
+        double A02 = l22 * (waa * l00 * uv + wab * (l00 * uu + l10 * vv) + wbb * l10 * uv);
+        double A11 = wbb * l11 * l11 * vv;
+        double A12 = l11 * l22 * (wab * vv + wbb * uv);
+        double A22 = l22 * l22 * (waa * vv + 2 * wab * uv + wbb * uu);
+        double r0, r1, r2;
+        if (ctx.mode == ConstraintMode.XPBD) {
+            double t0 = compliance(i) * ctx.inverseH2, t1 = compliance(i + 1) * ctx.inverseH2, t2 = compliance(i + 2) * ctx.inverseH2;
+            A00 += t0; A11 += t1; A22 += t2;
+            r0 = -C0 - t0 * lambda[i]; r1 = -C1 - t1 * lambda[i + 1]; r2 = -C2 - t2 * lambda[i + 2];
+        } else {
+            r0 = -stiffnessPerSweep(i) * C0; r1 = -stiffnessPerSweep(i + 1) * C1; r2 = -stiffnessPerSweep(i + 2) * C2;
+        }
+        // LDLᵀ of the 3×3 symmetric A; a pivot at or below round-off of the diagonal drops its row.
+        double tiny = 1e-14 * (A00 + A11 + A22);
+        if (!(tiny > 0)) return;
+        double d0 = A00, m10 = 0, m20 = 0;
+        if (d0 > tiny) { m10 = A01 / d0; m20 = A02 / d0; } else d0 = 0;
+        double d1 = A11 - m10 * m10 * d0, m21 = 0;
+        if (d1 > tiny) m21 = (A12 - m20 * m10 * d0) / d1; else d1 = 0;
+        double d2 = A22 - m20 * m20 * d0 - m21 * m21 * d1;
+        if (!(d2 > tiny)) d2 = 0;
+        double y0 = r0, y1 = r1 - m10 * y0, y2 = r2 - m20 * y0 - m21 * y1;
+        double dl2 = d2 > 0 ? y2 / d2 : 0, dl1 = d1 > 0 ? y1 / d1 - m21 * dl2 : 0, dl0 = d0 > 0 ? y0 / d0 - m10 * dl1 - m20 * dl2 : 0;
+        lambda[i] += dl0; lambda[i + 1] += dl1; lambda[i + 2] += dl2;
+        // Σ_r Δλ_r gu_r and Σ_r Δλ_r gv_r, in the basis (f_u, f_v).
+        double uCoefU = dl0 * l00, uCoefV = dl2 * l22, vCoefU = dl2 * l22, vCoefV = dl0 * l10 + dl1 * l11;
+        double gux = uCoefU * fux + uCoefV * fvx, guy = uCoefU * fuy + uCoefV * fvy, guz = uCoefU * fuz + uCoefV * fvz;
+        double gvx = vCoefU * fux + vCoefV * fvx, gvy = vCoefU * fuy + vCoefV * fvy, gvz = vCoefU * fuz + vCoefV * fvz;
+        double s0a = w0 * a0, s0b = w0 * b0, s1a = w1 * P, s1b = w1 * Q, s2a = w2 * R, s2b = w2 * S;
+        x[a] += s0a * gux + s0b * gvx; x[a + 1] += s0a * guy + s0b * gvy; x[a + 2] += s0a * guz + s0b * gvz;
+        x[b] += s1a * gux + s1b * gvx; x[b + 1] += s1a * guy + s1b * gvy; x[b + 2] += s1a * guz + s1b * gvz;
+        x[c] += s2a * gux + s2b * gvx; x[c + 1] += s2a * guy + s2b * gvy; x[c + 2] += s2a * guz + s2b * gvz;
     }
 
     @Override void projectRange(int from, int to, Particles p, SolverContext ctx) {
-        for (int i = from; i < to; i++) project(i, p, ctx);
+        for (int t = from; t < to; t++) project(t, p, ctx);
     }
 
     @Override void projectListed(int[] order, int from, int to, Particles p, SolverContext ctx) {

@@ -4,8 +4,8 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * The order of one Gauss–Seidel sweep: segments, each a range of one block's constraints (as built) or a
- * stretch of a list of its indices (coloured), grouped into phases whose constraints share no particle
+ * The order of one Gauss–Seidel sweep: segments, each a range of one block's units (as built) or a
+ * stretch of a list of its unit indices (coloured), grouped into phases whose constraints share no particle
  * (the colours), so that a phase can be split across threads. In the as-built order each segment is a
  * phase of its own and is never split.
  */
@@ -36,10 +36,10 @@ final class SweepOrder {
         List<int[]> l = new ArrayList<>(), range = new ArrayList<>();
         List<Integer> phases = new ArrayList<>(List.of(0));
         for (ConstraintBlock block : blocks) {
-            if (block.count() == 0) continue;
+            if (block.units() == 0) continue;
             b.add(block);
             l.add(null);
-            range.add(new int[] {0, block.count()});
+            range.add(new int[] {0, block.units()});
             phases.add(b.size());
         }
         return new SweepOrder(b, l, range, phases);
@@ -84,9 +84,9 @@ final class SweepOrder {
     void sweep(Particles p, SolverContext ctx, StepProbe probe) {
         for (int s = 0; s < block.length; s++)
             for (int k = from[s]; k < to[s]; k++) {
-                int i = list[s] == null ? k : list[s][k];
-                block[s].project(i, p, ctx);
-                probe.check(block[s], i);
+                int u = list[s] == null ? k : list[s][k];
+                block[s].project(u, p, ctx);
+                probe.check(block[s], u * block[s].rowsPerUnit());
             }
     }
 }

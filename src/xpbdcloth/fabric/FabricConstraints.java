@@ -11,13 +11,14 @@ import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.DihedralBlock;
 import xpbdcloth.engine.MembraneBlock;
 import xpbdcloth.engine.OrthotropicMaterial;
+import xpbdcloth.engine.QuadraticBendBlock;
 import xpbdcloth.engine.Particles;
 import xpbdcloth.engine.TetherBlock;
 
 /**
  * A cloth as a material rather than as springs: from a triangle mesh at rest, the membrane of every
- * triangle ({@link MembraneBlock}, warp along a given in-plane direction), a dihedral bend on every
- * interior edge ({@link DihedralBlock}) and, if asked, a tether from every free particle to its nearest
+ * triangle ({@link MembraneBlock}, warp along a given in-plane direction), a bend on every interior edge
+ * ({@link QuadraticBendBlock} where the rest is flat, {@link DihedralBlock} where it is not) and, if asked, a tether from every free particle to its nearest
  * pinned one along the mesh ({@link TetherBlock}). The blocks' constants come from the material's
  * moduli and the mesh's rest shape, so the same fabric on a finer mesh is the same cloth.
  */
@@ -32,7 +33,7 @@ public final class FabricConstraints {
      * @param membrane  in-plane elasticity
      * @param bendingStiffness B, N·m (per unit width)
      * @param tethers   whether to tether free particles to their nearest pin
-     * @return the membrane, dihedral and (if asked and anything is pinned) tether blocks, in that order
+     * @return the membrane block, the bending blocks (quadratic where flat, dihedral where bent) and (if asked and anything is pinned) the tether block, in that order
      */
     public static List<ConstraintBlock> build(Particles p, int[] triangles, double[] warp, OrthotropicMaterial membrane,
                                               double bendingStiffness, boolean tethers) {
@@ -46,7 +47,8 @@ public final class FabricConstraints {
             int w = warp.length == 3 ? 0 : t;
             m.addTriangle(p, triangles[t], triangles[t + 1], triangles[t + 2], warp[w], warp[w + 1], warp[w + 2], membrane);
         }
-        List<ConstraintBlock> blocks = new ArrayList<>(List.of(m, dihedrals(p, triangles, bendingStiffness)));
+        List<ConstraintBlock> blocks = new ArrayList<>(List.of(m));
+        blocks.addAll(bends(p, triangles, bendingStiffness));
         if (tethers) {
             TetherBlock t = tethers(p, triangles);
             if (t.count() > 0) blocks.add(t);
@@ -82,9 +84,17 @@ public final class FabricConstraints {
         return out;
     }
 
-    /** A bend on every edge two triangles share (an edge of more than two triangles bends between the first two). */
-    static DihedralBlock dihedrals(Particles p, int[] triangles, double bendingStiffness) {
-        DihedralBlock d = new DihedralBlock(ConstraintFamily.DIHEDRAL, triangles.length / 2);
+    /** A flat hinge's rest angle may differ from 0 by this much (rad) and still bend quadratically. */
+    static final double FLAT = 1e-6;
+
+    /**
+     * A bend on every edge two triangles share (an edge of more than two triangles bends between the first
+     * two): a {@link QuadraticBendBlock} where the rest mesh is flat across the edge, a {@link DihedralBlock}
+     * where it is bent (a rest shape the quadratic model cannot hold); the blocks that have any, in that order.
+     */
+    static List<ConstraintBlock> bends(Particles p, int[] triangles, double bendingStiffness) {
+        QuadraticBendBlock flat = new QuadraticBendBlock(ConstraintFamily.DIHEDRAL, triangles.length / 2);
+        DihedralBlock bent = new DihedralBlock(ConstraintFamily.DIHEDRAL, 16);
         Map<Long, Integer> firstOpposite = new HashMap<>();
         long n = p.count();
         for (int t = 0; t < triangles.length; t += 3)
@@ -94,11 +104,15 @@ public final class FabricConstraints {
                 Integer other = firstOpposite.putIfAbsent(key, opposite);
                 // The edge as the first triangle walked it (a→b): the order fixes the angle's sign convention.
                 if (other != null && other >= 0) {
-                    d.addAtCurrentShape(p, other, opposite, b, a, bendingStiffness);
+                    if (QuadraticBendBlock.isFlat(p, other, opposite, b, a, FLAT)) flat.addAtCurrentShape(p, other, opposite, b, a, bendingStiffness);
+                    else bent.addAtCurrentShape(p, other, opposite, b, a, bendingStiffness);
                     firstOpposite.put(key, -1);
                 }
             }
-        return d;
+        List<ConstraintBlock> out = new ArrayList<>();
+        if (flat.count() > 0) out.add(flat);
+        if (bent.count() > 0) out.add(bent);
+        return out;
     }
 
     /** Each free particle tethered to its nearest pin along the rest mesh's edges (Dijkstra from all pins). */

@@ -4,6 +4,7 @@ import java.util.List;
 import xpbdcloth.engine.ConstraintBlock;
 import xpbdcloth.engine.DihedralBlock;
 import xpbdcloth.engine.MembraneBlock;
+import xpbdcloth.engine.QuadraticBendBlock;
 import xpbdcloth.engine.Particles;
 
 /**
@@ -32,6 +33,9 @@ public final class FabricSwap {
             } else if (b instanceof DihedralBlock) {
                 DihedralBlock d = (DihedralBlock) b;
                 for (int i = 0; i < d.count(); i++) d.setBendingStiffness(i, fabric.bendingStiffness);
+            } else if (b instanceof QuadraticBendBlock) {
+                QuadraticBendBlock q = (QuadraticBendBlock) b;
+                for (int u = 0; u < q.hingeCount(); u++) q.setBendingStiffness(u, fabric.bendingStiffness);
             }
         }
         if (area == 0) return Double.NaN;

@@ -67,7 +67,13 @@ final class TrajectoryAdjoint {
     private final double[][] endV;
     /** Tape entries of one substep (the projections' inputs over its sweeps). */
     private final int substepTape;
-    private final double[] v, prev, lambda, alphaTilde, tape, grad = new double[12], hu = new double[12], gBar = new double[12];
+    private final double[] v, prev, lambda, alphaTilde, tape, hu = new double[12];
+    /** A unit's rows (at most {@link #ROWS}): their ∇C, adjoints of ∇C, C, the matrix A and the Δλ and adjoints solved with it. */
+    private static final int ROWS = 3;
+    private final double[][] grad = new double[ROWS][12], gBar = new double[ROWS][12];
+    private final double[] cOf = new double[ROWS], rhs = new double[ROWS], dLambda = new double[ROWS], nBar = new double[ROWS], dLambdaBar = new double[ROWS];
+    private final double[][] matrix = new double[ROWS][ROWS], aBar = new double[ROWS][ROWS], factor = new double[ROWS][ROWS];
+    private final double[] pivot = new double[ROWS], forward = new double[ROWS], lambdaBefore = new double[ROWS], lambdaAfterBar = new double[ROWS];
     private final DirectionalDifference difference = new DirectionalDifference();
     private double decay, dampingRate;
 
@@ -117,7 +123,7 @@ final class TrajectoryAdjoint {
                 if (!(alpha0[j] > 0))
                     throw new IllegalArgumentException("families." + ClothEnergy.name(b.family()) + ".compliance must be > 0 for a fit (a hard constraint has no compliance to scale), was " + alpha0[j]);
             }
-            tapeLength += b.count() * (3 * b.arity() + 1);
+            tapeLength += b.units() * (3 * b.arity() + b.rowsPerUnit());
         }
         Particles p = sim.particles();
         n = p.count();
@@ -268,16 +274,25 @@ final class TrajectoryAdjoint {
         for (int it = 0; it < iterations; it++)
             for (int k = 0; k < blocks.length; k++) {
                 ConstraintBlock b = blocks[k];
-                int arity = b.arity();
-                for (int i = 0, j = lambdaOffset[k]; i < b.count(); i++, j++) {
+                int arity = b.arity(), m = b.rowsPerUnit();
+                for (int u = 0, j = lambdaOffset[k]; u < b.units(); u++, j += m) {
+                    int i = u * m;
                     if (record >= 0) {
                         for (int q = 0; q < arity; q++) {
                             int c = 3 * b.particle(i, q);
                             tape[t++] = x[c]; tape[t++] = x[c + 1]; tape[t++] = x[c + 2];
                         }
-                        tape[t++] = lambda[j];
+                        for (int r = 0; r < m; r++) tape[t++] = lambda[j + r];
                     }
-                    project(b, i, j);
+                    if (!solveUnit(b, i, j)) continue;
+                    for (int q = 0; q < arity; q++) {
+                        int p = b.particle(i, q);
+                        for (int r = 0; r < m; r++) {
+                            double s = w[p] * dLambda[r];
+                            x[3 * p] += s * grad[r][3 * q]; x[3 * p + 1] += s * grad[r][3 * q + 1]; x[3 * p + 2] += s * grad[r][3 * q + 2];
+                        }
+                    }
+                    for (int r = 0; r < m; r++) lambda[j + r] += dLambda[r];
                 }
             }
         final double inv = 1.0 / h;
@@ -286,31 +301,63 @@ final class TrajectoryAdjoint {
             if (w[i] != 0) { v[3 * i] *= decay; v[3 * i + 1] *= decay; v[3 * i + 2] *= decay; }
     }
 
-    /** ∇C of constraint i of b at the scratch positions into {@link #grad}; returns Σᵢ wᵢ|∇ᵢC|². */
-    private double gradientAndWeight(ConstraintBlock b, int i) {
-        b.gradient(i, scratch, grad);
-        double wg = 0;
-        for (int q = 0; q < b.arity(); q++) {
-            double wq = w[b.particle(i, q)];
-            wg += wq * (sq(grad[3 * q]) + sq(grad[3 * q + 1]) + sq(grad[3 * q + 2]));
+    /**
+     * The XPBD projection of one unit of b (rows i …, flat λ index j …) at the scratch positions, as the
+     * blocks solve it: its rows' C and ∇C into {@link #cOf} and {@link #grad}, A = Σ w ∇Cᵣ·∇Cₛ + α̃ᵣδᵣₛ and
+     * A Δλ = −C − α̃λ by LDLᵀ into {@link #dLambda} (a pivot at round-off drops its row, as the blocks do).
+     * False when nothing can move.
+     */
+    private boolean solveUnit(ConstraintBlock b, int i, int j) {
+        int m = b.rowsPerUnit(), arity = b.arity();
+        for (int r = 0; r < m; r++) {
+            cOf[r] = b.evaluate(i + r, scratch);
+            b.gradient(i + r, scratch, grad[r]);
         }
-        return wg;
+        double trace = 0;
+        for (int r = 0; r < m; r++) {
+            for (int c = 0; c <= r; c++) {
+                double sum = 0;
+                for (int q = 0; q < arity; q++) {
+                    double wq = w[b.particle(i, q)];
+                    sum += wq * (grad[r][3 * q] * grad[c][3 * q] + grad[r][3 * q + 1] * grad[c][3 * q + 1] + grad[r][3 * q + 2] * grad[c][3 * q + 2]);
+                }
+                matrix[r][c] = matrix[c][r] = sum;
+            }
+            matrix[r][r] += alphaTilde[j + r];
+            rhs[r] = -cOf[r] - alphaTilde[j + r] * lambda[j + r];
+            trace += matrix[r][r];
+        }
+        if (!(trace > 0)) return false;
+        solve(m, 1e-14 * trace, rhs, dLambda);
+        return true;
     }
 
-    /** The XPBD projection of constraint i of b (flat index j), from its C and ∇C. */
-    private void project(ConstraintBlock b, int i, int j) {
-        double c = b.evaluate(i, scratch);
-        int arity = b.arity();
-        double a = alphaTilde[j], denominator = gradientAndWeight(b, i) + a;
-        if (denominator <= 0) return;
-        double dLambda = (-c - a * lambda[j]) / denominator;
-        double[] x = scratch.positions();
-        for (int q = 0; q < arity; q++) {
-            int p = b.particle(i, q);
-            double s = w[p] * dLambda;
-            x[3 * p] += s * grad[3 * q]; x[3 * p + 1] += s * grad[3 * q + 1]; x[3 * p + 2] += s * grad[3 * q + 2];
+    /**
+     * A x = b for the symmetric m × m {@link #matrix} by LDLᵀ, pivots at or below {@code tiny} dropped (their
+     * component 0): the blocks' rule, so a replay follows them.
+     */
+    private void solve(int m, double tiny, double[] b, double[] out) {
+        final double[][] l = factor;
+        final double[] d = pivot, y = forward;
+        for (int r = 0; r < m; r++) {
+            for (int c = 0; c < r; c++) {
+                double sum = matrix[r][c];
+                for (int k = 0; k < c; k++) sum -= l[r][k] * l[c][k] * d[k];
+                l[r][c] = d[c] > 0 ? sum / d[c] : 0;
+            }
+            double diag = matrix[r][r];
+            for (int k = 0; k < r; k++) diag -= l[r][k] * l[r][k] * d[k];
+            d[r] = diag > tiny ? diag : 0;
         }
-        lambda[j] += dLambda;
+        for (int r = 0; r < m; r++) {
+            y[r] = b[r];
+            for (int k = 0; k < r; k++) y[r] -= l[r][k] * y[k];
+        }
+        for (int r = m - 1; r >= 0; r--) {
+            double v = d[r] > 0 ? y[r] / d[r] : 0;
+            for (int k = r + 1; k < m; k++) v -= l[k][r] * out[k];
+            out[r] = d[r] > 0 ? v : 0;
+        }
     }
 
     /**
@@ -340,10 +387,10 @@ final class TrajectoryAdjoint {
         for (int it = iterations - 1; it >= 0; it--)
             for (int k = blocks.length - 1; k >= 0; k--) {
                 ConstraintBlock b = blocks[k];
-                int arity = b.arity(), record = 3 * arity + 1;
-                for (int i = b.count() - 1, j = lambdaOffset[k] + i; i >= 0; i--, j--) {
+                int m = b.rowsPerUnit(), record = 3 * b.arity() + m;
+                for (int u = b.units() - 1; u >= 0; u--) {
                     t -= record;
-                    reverseProjection(k, i, j, t, xBar, thetaBar);
+                    reverseUnit(k, u * m, lambdaOffset[k] + u * m, t, xBar, thetaBar);
                 }
             }
         // Predict: p = x + h(v + hg) on free particles, p = x on pinned ones, prev = x.
@@ -356,43 +403,70 @@ final class TrajectoryAdjoint {
             }
     }
 
-    /** The adjoint of one projection (constraint i of block k, flat index j, its inputs at tape[t…]). */
-    private void reverseProjection(int k, int i, int j, int t, double[] xBar, double[] thetaBar) {
+    /**
+     * The adjoint of one unit's projection (rows i … of block k, flat λ index j …, its inputs at tape[t…]).
+     * Forward: Δλ = A⁻¹N with N = −C − α̃λ and A = G W Gᵀ + α̃ (G the rows' ∇C), x += W GᵀΔλ, λ += Δλ. Reverse:
+     * <pre>
+     *   Δλ̄ = λ̄ + G W x̄,   N̄ = A⁻¹Δλ̄,   Ā = −N̄ Δλᵀ
+     *   Ḡᵣ = Δλᵣ W x̄ + Σₛ (Āᵣₛ + Āₛᵣ) W Gₛ,   x̄ ← x̄ − Σᵣ N̄ᵣ Gᵣ + Σᵣ ∇²Cᵣ·Ḡᵣ,   λ̄ ← λ̄ − N̄α̃,   θ̄ += Σᵣ (Āᵣᵣ − N̄ᵣλᵣ) α̃ᵣ
+     * </pre>
+     * (one row: D̄ = Ā, Ḡ = wΔλ x̄ + 2D̄ w∇C, as before).
+     */
+    private void reverseUnit(int k, int i, int j, int t, double[] xBar, double[] thetaBar) {
         final ConstraintBlock b = blocks[k];
         final double[] x = scratch.positions();
-        int arity = b.arity();
+        int arity = b.arity(), m = b.rowsPerUnit();
         for (int q = 0; q < arity; q++) {
             int c = 3 * b.particle(i, q);
             x[c] = tape[t + 3 * q]; x[c + 1] = tape[t + 3 * q + 1]; x[c + 2] = tape[t + 3 * q + 2];
         }
-        double lambdaBefore = tape[t + 3 * arity];
-        double cValue = b.evaluate(i, scratch);
-        double a = alphaTilde[j], denominator = gradientAndWeight(b, i) + a;
-        if (denominator <= 0) return;
-        double dLambda = (-cValue - a * lambdaBefore) / denominator;
-        double dLambdaBar = lambda[j];
-        for (int q = 0; q < arity; q++) {
-            int p = b.particle(i, q);
-            double wq = w[p];
-            for (int e = 0; e < 3; e++) dLambdaBar += wq * grad[3 * q + e] * xBar[3 * p + e];
+        // Recompute the forward unit from its inputs (solveUnit reads λ where λ̄ is kept: swap λ before in).
+        final double[] lambdaBar = lambdaAfterBar;
+        for (int r = 0; r < m; r++) {
+            lambdaBefore[r] = tape[t + 3 * arity + r];
+            lambdaBar[r] = lambda[j + r];
+            lambda[j + r] = lambdaBefore[r];
         }
-        double nBar = dLambdaBar / denominator, dBar = -dLambdaBar * dLambda / denominator;
-        double gNorm = 0;
-        for (int q = 0; q < arity; q++) {
-            int p = b.particle(i, q);
-            double wq = w[p];
-            for (int e = 0; e < 3; e++) {
-                gBar[3 * q + e] = wq * dLambda * xBar[3 * p + e] + 2 * dBar * wq * grad[3 * q + e];
-                gNorm += sq(gBar[3 * q + e]);
+        boolean moved = solveUnit(b, i, j);
+        for (int r = 0; r < m; r++) lambda[j + r] = lambdaBar[r];
+        if (!moved) return;
+        for (int r = 0; r < m; r++) {
+            double sum = lambdaBar[r];
+            for (int q = 0; q < arity; q++) {
+                int p = b.particle(i, q);
+                double wq = w[p];
+                for (int e = 0; e < 3; e++) sum += wq * grad[r][3 * q + e] * xBar[3 * p + e];
             }
+            dLambdaBar[r] = sum;
         }
-        lambda[j] -= nBar * a;
+        double trace = 0;
+        for (int r = 0; r < m; r++) trace += matrix[r][r];
+        solve(m, 1e-14 * trace, dLambdaBar, nBar);
+        for (int r = 0; r < m; r++) for (int c = 0; c < m; c++) aBar[r][c] = -nBar[r] * dLambda[c];
         int param = parameterOf[k];
-        if (param >= 0) thetaBar[param] += (dBar - nBar * lambdaBefore) * a;
-        if (gNorm > 0) difference.along(b, i, scratch, DirectionalDifference.GRADIENT, gBar, fdStep, SHRINKS, hu);
-        for (int q = 0; q < arity; q++) {
-            int p = b.particle(i, q);
-            for (int e = 0; e < 3; e++) xBar[3 * p + e] += -nBar * grad[3 * q + e] + (gNorm > 0 ? hu[3 * q + e] : 0);
+        for (int r = 0; r < m; r++) {
+            lambda[j + r] -= nBar[r] * alphaTilde[j + r];
+            if (param >= 0) thetaBar[param] += (aBar[r][r] - nBar[r] * lambdaBefore[r]) * alphaTilde[j + r];
+        }
+        // Every Ḡᵣ from x̄ as it is after the projection, before x̄ takes any of the unit's terms.
+        for (int r = 0; r < m; r++)
+            for (int q = 0; q < arity; q++) {
+                int p = b.particle(i, q);
+                double wq = w[p];
+                for (int e = 0; e < 3; e++) {
+                    double g = wq * dLambda[r] * xBar[3 * p + e];
+                    for (int c = 0; c < m; c++) g += (aBar[r][c] + aBar[c][r]) * wq * grad[c][3 * q + e];
+                    gBar[r][3 * q + e] = g;
+                }
+            }
+        for (int r = 0; r < m; r++) {
+            double gNorm = 0;
+            for (int q = 0; q < 3 * arity; q++) gNorm += sq(gBar[r][q]);
+            if (gNorm > 0) difference.along(b, i + r, scratch, DirectionalDifference.GRADIENT, gBar[r], fdStep, SHRINKS, hu);
+            for (int q = 0; q < arity; q++) {
+                int p = b.particle(i, q);
+                for (int e = 0; e < 3; e++) xBar[3 * p + e] += -nBar[r] * grad[r][3 * q + e] + (gNorm > 0 ? hu[3 * q + e] : 0);
+            }
         }
     }
 

@@ -2,6 +2,7 @@ package xpbdcloth.experiments;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -10,6 +11,7 @@ import org.junit.jupiter.api.Test;
  * stiffness it tore within 20 steps (kinetic energy growing 10⁴-fold per step); with it the curtain stays
  * at Hooke's strain (2e-8) and its mechanical energy never rises by more than 1e-6 J.
  */
+@Tag("slow")
 class TautCurtainTest {
     @Test
     void aTautCurtainStaysStillUnderAGlobalSolver() {

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import xpbdcloth.engine.Cloth;
 import xpbdcloth.engine.ClothBuilder;
@@ -22,6 +23,7 @@ import xpbdcloth.engine.SolverSettings;
  * contracts sideways by ν, and a panel in simple shear stores ½ G γ² per area; on two resolutions.
  * The static state is XPBD's equilibrium, reached by damped steps.
  */
+@Tag("slow")
 class MembraneElasticityTest {
     /** A woven fabric's moduli per width, N/m (warp stiffer than weft, soft in shear). */
     static final OrthotropicMaterial FABRIC = new OrthotropicMaterial(1000, 400, 0.3, 60);

@@ -3,6 +3,7 @@ package xpbdcloth.fit;
 import static org.junit.jupiter.api.Assertions.*;
 
 import java.util.List;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.ConstraintMode;
@@ -14,6 +15,7 @@ import xpbdcloth.scene.Scene;
  * 0.05 m/N, damping c* = 0.5/s): the reverse-mode gradient against finite differences and a Taylor test,
  * and the recovery of all four parameters.
  */
+@Tag("slow")
 class DynamicFitTest {
     static final List<ConstraintFamily> ALL = List.of(ConstraintFamily.STRUCTURAL, ConstraintFamily.SHEAR, ConstraintFamily.BEND);
     static final int FRAMES = 50;

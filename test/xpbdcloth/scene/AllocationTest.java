@@ -2,6 +2,7 @@ package xpbdcloth.scene;
 
 import static org.junit.jupiter.api.Assertions.*;
 
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -10,6 +11,7 @@ import org.junit.jupiter.api.Test;
  * benchmark covers bare grids; this covers what scenes add: wind, pin scripts, spheres, meshes. (A
  * validation that built its parameter names on every call once made the flag allocate 44 kB a step.)
  */
+@Tag("slow")
 class AllocationTest {
     @Test
     void everySceneStepsWithoutAllocating() {

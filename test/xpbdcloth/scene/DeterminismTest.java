@@ -2,11 +2,13 @@ package xpbdcloth.scene;
 
 import static org.junit.jupiter.api.Assertions.*;
 
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import xpbdcloth.engine.ConstraintMode;
 import xpbdcloth.engine.Simulation;
 
 /** Same scene, same parameters: bitwise-identical positions, also across a mid-run mode switch. */
+@Tag("slow")
 class DeterminismTest {
     static double[] run(String scene, boolean switchModes) {
         Simulation sim = Scene.builtIn(scene).simulation();

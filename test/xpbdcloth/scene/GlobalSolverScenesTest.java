@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.Metrics;
@@ -19,6 +20,7 @@ import xpbdcloth.engine.SolverType;
  * 12 %, the spinning sphere at 11 %), and no energy creeping in: the kinetic energy of the last 1000
  * steps stays below the largest of the first 2000 (a growing mode would do the opposite).
  */
+@Tag("slow")
 class GlobalSolverScenesTest {
     static final List<String> FIRST_FIVE = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere");
     static final int STEPS = 3000;

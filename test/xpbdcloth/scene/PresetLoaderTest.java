@@ -64,8 +64,8 @@ class PresetLoaderTest {
     @Test
     void fabricLoadsAndBadOnesAreNamed() {
         Scene scene = Scene.of(PresetLoader.parse("f.json", fabric(COTTONISH + ", \"tethers\": true")));
-        // 4 × 4: 18 triangles (3 rows each), 21 interior edges, 15 free particles tethered to the pin.
-        assertEquals(18 * 3 + 21 + 15, scene.simulation().constraintCount());
+        // 4 × 4: 18 triangles (3 rows each), 21 interior edges (3 rows each: a flat hinge's vector), 15 free particles tethered to the pin.
+        assertEquals(18 * 3 + 21 * 3 + 15, scene.simulation().constraintCount());
         PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse("f.json", fabric(COTTONISH.replace("\"poisson\": 0.25", "\"poisson\": 1.8"))));
         assertEquals("fabric.poisson", e.field());
         assertTrue(e.problem().contains("positive-definite"), e.getMessage());

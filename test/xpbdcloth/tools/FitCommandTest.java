@@ -6,6 +6,7 @@ import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import picocli.CommandLine;
@@ -14,6 +15,7 @@ import xpbdcloth.scene.Preset;
 import xpbdcloth.scene.PresetLoader;
 
 /** `xpbd-cloth fit` as a user runs it: make an observation, fit it from a tenth of α*, load what it wrote. */
+@Tag("slow")
 class FitCommandTest {
     final StringWriter out = new StringWriter(), err = new StringWriter();
 

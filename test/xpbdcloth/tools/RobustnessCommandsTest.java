@@ -2,10 +2,12 @@ package xpbdcloth.tools;
 
 import static org.junit.jupiter.api.Assertions.*;
 
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import xpbdcloth.engine.SolverType;
 
 /** The short versions of `gradle soak` and the fuzzer, as CI runs them. */
+@Tag("slow")
 class RobustnessCommandsTest {
     /** corners and spinning-sphere for 3000 steps (60 s of simulated time) each stay within the soak's bounds. */
     @Test
