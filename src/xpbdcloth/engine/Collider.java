@@ -32,4 +32,14 @@ public abstract class Collider {
 
     /** C(x) of contact i (as in {@link #project}): its distance outside the surface plus margin, m (negative inside). */
     abstract double clearance(Particles p, int i);
+
+    /**
+     * Contact i's projection moving {@code particle} alone (a solver that updates particles one at a time):
+     * a collider's contact moves only its particle anyway; a contact between two particles moves this one
+     * by its share.
+     */
+    void projectOne(Particles p, int i, int particle, double h) { project(p, i, h); }
+
+    /** The second particle of contact i, or −1 when the other side is a solid. */
+    int partner(int i) { return -1; }
 }

@@ -32,6 +32,8 @@ final class ContactSet {
 
     int count() { return count; }
     int particle(int k) { return particle[k]; }
+    Collider with(int k) { return with[k]; }
+    int entry(int k) { return entry[k]; }
 
     /** Makes room for every particle against every collider (when colliders are added, never during a step). */
     void reserve(int particles, int colliders) {
@@ -93,6 +95,35 @@ final class ContactSet {
     }
 
     private long projectNanos;
+
+    /**
+     * The contacts of each particle (both particles of a pair), as lists: particle i's are
+     * list[start[i] .. start[i + 1]); {@code start} has n + 1 entries, {@code list} grows when it must.
+     */
+    int[] byParticle(int n, int[] start, int[] list) {
+        java.util.Arrays.fill(start, 0, n + 1, 0);
+        int entries = 0;
+        for (int k = 0; k < count; k++) {
+            start[particle[k] + 1]++;
+            int other = with[k].partner(entry[k]);
+            if (other >= 0) start[other + 1]++;
+        }
+        for (int i = 0; i < n; i++) start[i + 1] += start[i];
+        entries = start[n];
+        if (list.length < entries) list = new int[Math.max(entries, 2 * list.length)];
+        for (int k = 0; k < count; k++) {
+            list[start[particle[k]]++] = k;
+            int other = with[k].partner(entry[k]);
+            if (other >= 0) list[start[other]++] = k;
+        }
+        // The fill advanced each start to its list's end: shift back.
+        for (int i = n; i > 0; i--) start[i] = start[i - 1];
+        start[0] = 0;
+        return list;
+    }
+
+    /** Contact k's projection moving only {@code particle} (one of its particles). */
+    void projectOne(Particles p, int k, int particle, double h) { with[k].projectOne(p, entry[k], particle, h); }
 
     /** Contact k alone (the probe's replay checks after each). */
     void project(Particles p, SolverContext ctx, int k) {

@@ -1,20 +1,22 @@
 package xpbdcloth.engine;
 
 /**
- * Gauss–Seidel over the coloured order on several threads ({@link ParallelSweeps}): the colours of one
- * sweep in parallel, then the contacts on the calling thread, n times. Constraints of one colour share no
- * particle, so the result is the sequential coloured sweep's, bit for bit, for any thread count. Chosen
- * only when nobody listens to single sweeps (the team runs all of a substep's sweeps in one go).
+ * Gauss–Seidel over the coloured order on several threads ({@link Team}): each colour's part of every
+ * block split into equal contiguous chunks, one per thread, a barrier before the next colour, then the
+ * contacts on the calling thread, n times. Constraints of one colour share no particle, so the result is
+ * the sequential coloured sweep's, bit for bit, for any thread count. Chosen only when nobody listens to
+ * single sweeps (the team runs all of a substep's sweeps in one go).
  */
-final class ParallelColouredSweeps implements SolveStage {
+final class ParallelColouredSweeps implements SolveStage, Team.Job {
     private final SweepOrder colouring;
-    private final ParallelSweeps team;
+    private final Team team;
     private final Particles particles;
     private final SolverContext ctx;
     private final ContactSet contacts;
     private final SequentialSweeps sameResult;
+    private int iterations;
 
-    ParallelColouredSweeps(SweepOrder colouring, ParallelSweeps team, Particles particles, SolverContext ctx, ContactSet contacts, SequentialSweeps sameResult) {
+    ParallelColouredSweeps(SweepOrder colouring, Team team, Particles particles, SolverContext ctx, ContactSet contacts, SequentialSweeps sameResult) {
         this.colouring = colouring;
         this.team = team;
         this.particles = particles;
@@ -24,7 +26,26 @@ final class ParallelColouredSweeps implements SolveStage {
     }
 
     @Override public void solve(int substep, int iterations) {
-        team.sweep(colouring, particles, ctx, iterations, contacts);
+        this.iterations = iterations;
+        team.run(this);
+    }
+
+    @Override public void work(int id, Team t) {
+        final SweepOrder c = colouring;
+        final int colours = c.phases(), threads = t.threads();
+        final boolean anyContact = contacts.count() > 0;
+        for (int it = 0; it < iterations; it++) {
+            for (int k = 0; k < colours; k++) {
+                // Each thread takes its share of every block's part of the colour.
+                for (int s = c.phaseStart[k]; s < c.phaseStart[k + 1]; s++) c.project(s, id, threads, particles, ctx);
+                t.await();
+            }
+            // Contacts are few and found per substep: the calling thread takes them, the others wait.
+            if (anyContact) {
+                if (id == 0) contacts.project(particles, ctx);
+                t.await();
+            }
+        }
     }
 
     /** Replayed on one thread: the same result, and a probe is not thread-safe. */

@@ -200,6 +200,33 @@ public final class SelfCollision extends Collider {
         x[b] += fj * tx; x[b + 1] += fj * ty; x[b + 2] += fj * tz;
     }
 
+    @Override int partner(int pair) { return pairJ[pair]; }
+
+    /** The particle of the pair other than {@code self}. */
+    int other(int pair, int self) { return pairI[pair] == self ? pairJ[pair] : pairI[pair]; }
+
+    /** The pair's projection moving only {@code particle}, by its mass share of the overlap, with friction on it alone. */
+    @Override void projectOne(Particles p, int pair, int particle, double h) {
+        final int i = pairI[pair], j = pairJ[pair];
+        final int self = particle == i ? i : j, other = particle == i ? j : i, a = 3 * self, b = 3 * other;
+        final double[] x = p.x, prev = p.prev;
+        double dx = x[a] - x[b], dy = x[a + 1] - x[b + 1], dz = x[a + 2] - x[b + 2];
+        double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        double C = len - thickness;
+        double ws = p.w[self], w = ws + p.w[other];
+        if (C >= 0 || len < DistanceBlock.MIN_LENGTH || ws == 0) return;
+        double nx = dx / len, ny = dy / len, nz = dz / len, move = -C * ws / w;
+        x[a] += move * nx; x[a + 1] += move * ny; x[a + 2] += move * nz;
+        double rx = (x[a] - prev[a]) - (x[b] - prev[b]), ry = (x[a + 1] - prev[a + 1]) - (x[b + 1] - prev[b + 1]), rz = (x[a + 2] - prev[a + 2]) - (x[b + 2] - prev[b + 2]);
+        double along = rx * nx + ry * ny + rz * nz;
+        double tx = rx - along * nx, ty = ry - along * ny, tz = rz - along * nz;
+        double slip = Math.sqrt(tx * tx + ty * ty + tz * tz);
+        if (slip == 0) return;
+        double removed = slip < staticFriction * -C ? 1.0 : Math.min(kineticFriction * -C / slip, 1.0);
+        double share = removed * ws / w;
+        x[a] -= share * tx; x[a + 1] -= share * ty; x[a + 2] -= share * tz;
+    }
+
     @Override double clearance(Particles p, int pair) {
         int a = 3 * pairI[pair], b = 3 * pairJ[pair];
         double dx = p.x[a] - p.x[b], dy = p.x[a + 1] - p.x[b + 1], dz = p.x[a + 2] - p.x[b + 2];

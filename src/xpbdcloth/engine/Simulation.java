@@ -54,7 +54,7 @@ public final class Simulation {
     private SweepOrder coloured;
     /** {@link #constraints()}, made when first asked for after a change. */
     private Constraint[] views;
-    private ParallelSweeps parallel;
+    private Team parallel;
     /** The global solver for the cloth constraints, built on first use after they change (not when grabbing). */
     private GlobalSolver global;
     /** The solve stage, chosen when the constraint set or the solver settings change. */
@@ -372,9 +372,13 @@ public final class Simulation {
         SolverType type = settings.solver();
         boolean coloured = settings.order() == ConstraintOrder.COLOURED;
         int threads = settings.threads();
-        GlobalSolver g = type == SolverType.GAUSS_SEIDEL ? null : globalSolver(); // remade if the PCG settings changed
+        boolean pcg = type == SolverType.JACOBI_PCG || type == SolverType.MULTIGRID_PCG;
+        GlobalSolver g = pcg ? globalSolver() : null; // remade if the PCG settings changed
         if (solve != null && solvedFor.matches(type, coloured, threads, sweepListener, g)) return solve;
-        if (type != SolverType.GAUSS_SEIDEL) {
+        if (type == SolverType.VERTEX_BLOCK_DESCENT) {
+            solve = new VertexBlockDescent(body, attachments, particles, ctx, settings, contacts, this, sweepListener,
+                    sweepListener == NO_LISTENER ? parallelFor(threads) : null);
+        } else if (pcg) {
             List<ConstraintBlock> local = new ArrayList<>();
             for (ConstraintBlock blk : body) if (!GlobalSolver.takes(blk)) local.add(blk);
             SequentialSweeps rest = new SequentialSweeps(SweepOrder.asBuilt(List.of(attachments)), particles, ctx, contacts, this, sweepListener);
@@ -385,7 +389,7 @@ public final class Simulation {
             SweepOrder col = colouring();
             SequentialSweeps sequential = new SequentialSweeps(col, particles, ctx, contacts, this, sweepListener);
             // The team runs a substep's sweeps in one go, so a listener to single sweeps gets the sequential one.
-            ParallelSweeps team = sweepListener == NO_LISTENER ? parallelFor(threads) : null;
+            Team team = sweepListener == NO_LISTENER ? parallelFor(threads) : null;
             solve = team == null ? sequential : new ParallelColouredSweeps(col, team, particles, ctx, contacts, sequential);
         }
         solvedFor.set(type, coloured, threads, sweepListener, g);
@@ -466,11 +470,11 @@ public final class Simulation {
     public long[] multigridSetup() { return global == null ? new long[2] : new long[] {global.multigridLevels(), global.multigridSetupNanos()}; }
 
     /** The helper threads for {@code threads} (made once per thread count), or null for one thread. */
-    private ParallelSweeps parallelFor(int threads) {
+    private Team parallelFor(int threads) {
         if (threads <= 1) return null;
         if (parallel == null || parallel.threads() != threads) {
             if (parallel != null) parallel.close();
-            parallel = new ParallelSweeps(threads);
+            parallel = new Team(threads);
         }
         return parallel;
     }

@@ -144,11 +144,11 @@ public final class SolverSettings {
         return this;
     }
 
-    /** Gauss–Seidel (default) or a global PCG solve per iteration; contacts always use Gauss–Seidel. */
+    /** Gauss–Seidel (default), a global PCG solve per iteration, or vertex block descent. */
     public SolverType solver() { return solver; }
 
     /**
-     * Chooses the solver. A global solver needs XPBD mode, and is refused in PBD mode: PBD's k is "the
+     * Chooses the solver. Every solver but Gauss–Seidel needs XPBD mode, and is refused in PBD mode: PBD's k is "the
      * fraction of its error one Gauss–Seidel projection removes" (with Müller's k', the fraction n
      * sweeps remove), a statement about one constraint solved alone that has no counterpart in a
      * simultaneous solve. The first version set α̃ = 0 there, which silently made every PBD constraint
@@ -156,9 +156,9 @@ public final class SolverSettings {
      * singular: conjugate gradients diverged and the shipped scenes went NaN within one or two steps.
      */
     public SolverSettings solver(SolverType t) {
-        if (t == null) throw new IllegalArgumentException("solver must be GAUSS_SEIDEL, JACOBI_PCG or MULTIGRID_PCG, was null");
+        if (t == null) throw new IllegalArgumentException("solver must be one of " + java.util.Arrays.toString(SolverType.values()) + ", was null");
         if (t != SolverType.GAUSS_SEIDEL && mode == ConstraintMode.PBD)
-            throw new IllegalArgumentException("solver must be gauss-seidel in PBD mode (a global solve needs XPBD's compliance), was " + t.label());
+            throw new IllegalArgumentException("solver must be gauss-seidel in PBD mode (the other solvers need XPBD's compliance), was " + t.label());
         solver = t;
         return this;
     }

@@ -7,8 +7,14 @@ public enum SolverType {
     /** Global: linearise all constraints and solve (J W Jᵀ + α̃) Δλ = −C − α̃λ by conjugate gradients, Jacobi-preconditioned. */
     JACOBI_PCG,
     /** The same system, preconditioned by an unsmoothed-aggregation multigrid V-cycle (as MGPBD). */
-    MULTIGRID_PCG;
+    MULTIGRID_PCG,
+    /**
+     * XPBD's step solved in positions, particle by particle ({@link VertexBlockDescent}): a cloth at rest is
+     * a fixed point at any sweep count, so it settles to the converged cloth; contacts, tethers and hard
+     * constraints are projected as in Gauss–Seidel after each iteration.
+     */
+    VERTEX_BLOCK_DESCENT;
 
-    /** The name users type and read: gauss-seidel, jacobi-pcg, multigrid-pcg. */
+    /** The name users type and read: gauss-seidel, jacobi-pcg, multigrid-pcg, vertex-block-descent. */
     public String label() { return name().toLowerCase(java.util.Locale.ROOT).replace('_', '-'); }
 }

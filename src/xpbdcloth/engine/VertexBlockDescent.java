@@ -1,0 +1,519 @@
+package xpbdcloth.engine;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.BitSet;
+import java.util.List;
+
+/**
+ * The solve stage of {@link SolverType#VERTEX_BLOCK_DESCENT}: the same implicit Euler step XPBD solves,
+ * in positions rather than multipliers. Each iteration visits the free particles one at a time and moves
+ * each to the minimum of the step's energy with the others held (a 3 × 3 Newton step), Chen, Lan, Wu, Cao,
+ * Yuksel, Liu, Macklin, Kavan 2024, "Vertex Block Descent":
+ * <pre>
+ *   G(x) = Σᵢ mᵢ|xᵢ − yᵢ|² / (2h²) + Σⱼ Cⱼ(x)² / (2αⱼ),     y = x_prev + h v + h² (g + w f)
+ *   per particle i:  fᵢ = −mᵢ(xᵢ − yᵢ)/h² − Σⱼ (Cⱼ/αⱼ) ∇ᵢCⱼ,   Hᵢ = mᵢ/h² I + Σⱼ (∇ᵢCⱼ∇ᵢCⱼᵀ + [Cⱼ∇²ᵢᵢCⱼ]₊) / αⱼ,   xᵢ += Hᵢ⁻¹ fᵢ
+ * </pre>
+ * ([·]₊: the second-derivative term where it stiffens, so Hᵢ stays positive definite). The compliances
+ * are XPBD's. What has no compliance enters as a stiff penalty (a tether's stretch, two layers of the
+ * cloth closer than its thickness, with friction as a lagged dissipative force) or is met right after the
+ * particle's step (a hard attachment, a contact with a solid, which keeps its continuous tests); a hard
+ * constraint of another kind (α = 0 has no energy) is projected as in XPBD after each iteration.
+ *
+ * <p>Why: XPBD resets λ every substep, so a Gauss–Seidel sweep rebuilds every force from nothing, and
+ * the few sweeps a step can afford carry a pin's hold only a few edges into the cloth: its rest sags and
+ * stretches more the finer the mesh. Here the forces are functions of the positions, and the iteration
+ * starts from x_prev + h v (not y): at rest that is the rest itself, where every fᵢ is already 0, so a
+ * cloth at rest is a fixed point whatever the sweep count, and the rest the scene settles to is the
+ * energy's minimum, the converged cloth. What few sweeps cost is lag while the cloth moves, not a
+ * softer rest.
+ *
+ * <p>Particles of one colour share no energy term, so a colour's particles can be solved in any order or
+ * on any number of threads with the same result. Membrane triangles, quadratic hinges, springs and tethers
+ * have closed forms here ({@link #takes}).
+ */
+final class VertexBlockDescent implements SolveStage, Team.Job {
+    private final Particles particles;
+    private final SolverContext ctx;
+    private final SolverSettings settings;
+    /** What is projected after each iteration: hard and inequality blocks, attachments (XPBD), then contacts. */
+    private final SweepOrder rest;
+    private final ContactSet contacts;
+    private final Simulation sim;
+    private final SweepListener listener;
+    /** The threads a substep's iterations run on, or null for this one (and for a listener to single iterations). */
+    private final Team team;
+    private int iterations;
+    private double inverseH2;
+    private final int n;
+    /** The inertial target y of the substep. */
+    private final double[] target;
+
+    // Membrane triangles: particles, D⁻¹ (P, Q, R, S), K = Σ_r r rᵀ/α_r (K00, K01, K11, K22) and their source rows.
+    private final int[] triParticle;
+    private final double[] triRest, triK;
+    private final MembraneBlock[] triBlock;
+    private final int[] triRow;
+    // Quadratic hinges: particles, coefficients, 1/α per component, and their source.
+    private final int[] hingeParticle;
+    private final double[] hingeCoefficient, hingeStiffness;
+    private final QuadraticBendBlock[] hingeBlock;
+    private final int[] hingeUnit;
+    // Springs: particles, rest length, 1/α, and their source.
+    private final int[] springParticle;
+    private final double[] springRest, springStiffness;
+    private final DistanceBlock[] springBlock;
+    private final int[] springRow;
+    // Tethers (the anchor is pinned): anchor, free particle, longest distance.
+    private final int[] tetherAnchor, tetherStart, tetherOf;
+    private final double[] tetherDistance;
+    /** The attachments (grabs): where each particle's are listed, to be met after its step. */
+    private final AttachmentBlock attachments;
+    private final int[] attachedStart, attachedOf;
+    /** The families taken as energies, for the report of a step that diverged. */
+    private final ConstraintFamily firstFamily;
+    // Per particle: the incidences of each kind (CSR): element·arity + slot.
+    private final int[] triStart, triOf, hingeStart, hingeOf, springStart, springOf;
+    /** Colours of the particles: colour c is order[colourStart[c] .. colourStart[c + 1]). */
+    final int[] order, colourStart;
+    /** This substep's contacts by particle (CSR), rebuilt after each collide stage. */
+    private final int[] contactStart;
+    private int[] contactOf = new int[16];
+    /**
+     * The most a particle may move in one step of its own: half its shortest edge at rest (to the nearest
+     * particle it shares a term with). A Newton step is exact for the quadratic terms, but the angle of a
+     * shear constraint is far from linear and its step can fling the particle (as {@link ShearBlock}'s
+     * projection limits its own).
+     */
+    private final double[] stepLimit;
+    /** Each particle's colour, and the positions at the start of the iteration (a same-colour pair partner's, read race-free). */
+    private final int[] colourOf;
+    private final double[] snapshot;
+    /**
+     * A pair contact's stiffness is this over h²(w_a + w_b): the pair's effective mass over h², times this,
+     * so the contact outweighs inertia and elasticity and its overlap at rest is a fraction of a micrometre.
+     */
+    static final double CONTACT_STIFFNESS = 1e3;
+    /** A particle's own step is at most this fraction of its shortest edge at rest. */
+    static final double MAX_STEP = 0.5;
+    /** A tether's penalty stiffness is this times the particle's m/h²: as stiff as a contact, for the same reason. */
+    static final double HARD_STIFFNESS = CONTACT_STIFFNESS;
+    /** Below this slip speed (m/s) friction is smoothed stick, above it kinetic (IPC's ε_v). */
+    static final double SLIP = 1e-3;
+
+    /**
+     * Whether this stage takes block b as an energy: a compliant membrane, quadratic bend or spring as XPBD's
+     * ½C²/α, a tether as a stiff penalty on its stretch. Any other is projected as in XPBD after each
+     * iteration: a hard constraint (α = 0 has no energy), and the angle constraints (shear, triangle bend,
+     * dihedral), whose Gauss–Newton step from a particle's view overshoots (a stiff shear grid at one sweep
+     * a substep blew up): those are far from linear where the others are quadratic or nearly.
+     */
+    static boolean takes(ConstraintBlock b) {
+        if (b instanceof TetherBlock) return true;
+        if (!(b instanceof MembraneBlock || b instanceof QuadraticBendBlock || b instanceof DistanceBlock)) return false;
+        for (int i = 0; i < b.count(); i++) if (!(b.compliance(i) > 0)) return false;
+        return true;
+    }
+
+    VertexBlockDescent(List<ConstraintBlock> body, AttachmentBlock attachments, Particles particles, SolverContext ctx, SolverSettings settings,
+                       ContactSet contacts, Simulation sim, SweepListener listener, Team team) {
+        this.particles = particles;
+        this.ctx = ctx;
+        this.settings = settings;
+        this.contacts = contacts;
+        this.sim = sim;
+        this.listener = listener;
+        this.team = team;
+        n = particles.count();
+        target = new double[3 * n];
+        contactStart = new int[n + 1];
+        snapshot = new double[3 * n];
+        List<ConstraintBlock> projected = new ArrayList<>();
+        List<MembraneBlock> membranes = new ArrayList<>();
+        List<QuadraticBendBlock> hinges = new ArrayList<>();
+        List<DistanceBlock> springs = new ArrayList<>();
+        List<TetherBlock> tethers = new ArrayList<>();
+        for (ConstraintBlock b : body) {
+            if (b.count() == 0) continue;
+            if (!takes(b)) projected.add(b);
+            else if (b instanceof MembraneBlock) membranes.add((MembraneBlock) b);
+            else if (b instanceof QuadraticBendBlock) hinges.add((QuadraticBendBlock) b);
+            else if (b instanceof DistanceBlock) springs.add((DistanceBlock) b);
+            else tethers.add((TetherBlock) b);
+        }
+        rest = SweepOrder.asBuilt(projected);
+        this.attachments = attachments;
+        firstFamily = !membranes.isEmpty() ? ConstraintFamily.MEMBRANE : !hinges.isEmpty() ? ConstraintFamily.DIHEDRAL
+                : !springs.isEmpty() ? springs.get(0).family() : ConstraintFamily.TETHER;
+
+        int triangles = 0, hingeCount = 0, springCount = 0;
+        for (MembraneBlock m : membranes) triangles += m.units();
+        for (QuadraticBendBlock q : hinges) hingeCount += q.units();
+        for (DistanceBlock d : springs) springCount += d.count();
+        triParticle = new int[3 * triangles]; triRest = new double[4 * triangles]; triK = new double[4 * triangles];
+        triBlock = new MembraneBlock[triangles]; triRow = new int[triangles];
+        int t = 0;
+        for (MembraneBlock m : membranes)
+            for (int u = 0; u < m.units(); u++, t++) {
+                int i = 3 * u;
+                for (int k = 0; k < 3; k++) triParticle[3 * t + k] = m.particle(i, k);
+                System.arraycopy(m.restInverse, 4 * i, triRest, 4 * t, 4);
+                triBlock[t] = m;
+                triRow[t] = i;
+            }
+        hingeParticle = new int[4 * hingeCount]; hingeCoefficient = new double[4 * hingeCount]; hingeStiffness = new double[3 * hingeCount];
+        hingeBlock = new QuadraticBendBlock[hingeCount]; hingeUnit = new int[hingeCount];
+        int h = 0;
+        for (QuadraticBendBlock q : hinges)
+            for (int u = 0; u < q.units(); u++, h++) {
+                for (int k = 0; k < 4; k++) hingeParticle[4 * h + k] = q.particle(3 * u, k);
+                System.arraycopy(q.coefficient, 4 * u, hingeCoefficient, 4 * h, 4);
+                hingeBlock[h] = q;
+                hingeUnit[h] = u;
+            }
+        springParticle = new int[2 * springCount]; springRest = new double[springCount]; springStiffness = new double[springCount];
+        springBlock = new DistanceBlock[springCount]; springRow = new int[springCount];
+        int s = 0;
+        for (DistanceBlock d : springs)
+            for (int i = 0; i < d.count(); i++, s++) {
+                springParticle[2 * s] = d.a(i);
+                springParticle[2 * s + 1] = d.b(i);
+                springRest[s] = d.restLength(i);
+                springBlock[s] = d;
+                springRow[s] = i;
+            }
+        int tetherCount = 0;
+        for (TetherBlock tb : tethers) tetherCount += tb.count();
+        tetherAnchor = new int[tetherCount];
+        tetherDistance = new double[tetherCount];
+        int[] tetherFree = new int[tetherCount];
+        int tt = 0;
+        for (TetherBlock tb : tethers)
+            for (int i = 0; i < tb.count(); i++, tt++) {
+                tetherAnchor[tt] = tb.particle(i, 0);
+                tetherFree[tt] = tb.particle(i, 1);
+                tetherDistance[tt] = tb.restDistance(i);
+            }
+        tetherStart = new int[n + 1];
+        tetherOf = incidences(tetherFree, 1, tetherStart);
+        int[] attached = new int[attachments.count()];
+        for (int i = 0; i < attached.length; i++) attached[i] = attachments.particle(i, 0);
+        attachedStart = new int[n + 1];
+        attachedOf = incidences(attached, 1, attachedStart);
+        triStart = new int[n + 1]; hingeStart = new int[n + 1]; springStart = new int[n + 1];
+        triOf = incidences(triParticle, 3, triStart);
+        hingeOf = incidences(hingeParticle, 4, hingeStart);
+        springOf = incidences(springParticle, 2, springStart);
+
+        stepLimit = new double[n];
+        Arrays.fill(stepLimit, Double.POSITIVE_INFINITY);
+        limitSteps(triStart, triOf, triParticle, 3);
+        limitSteps(hingeStart, hingeOf, hingeParticle, 4);
+        limitSteps(springStart, springOf, springParticle, 2);
+        for (int v = 0; v < n; v++) stepLimit[v] *= MAX_STEP;
+
+        // Colour the particles: two that share an energy term get different colours (greedy, in index order).
+        int[] colour = new int[n];
+        Arrays.fill(colour, -1);
+        BitSet used = new BitSet();
+        int colours = 0;
+        for (int v = 0; v < n; v++) {
+            used.clear();
+            markNeighbours(v, triStart, triOf, triParticle, 3, colour, used);
+            markNeighbours(v, hingeStart, hingeOf, hingeParticle, 4, colour, used);
+            markNeighbours(v, springStart, springOf, springParticle, 2, colour, used);
+            colour[v] = used.nextClearBit(0);
+            colours = Math.max(colours, colour[v] + 1);
+        }
+        colourStart = new int[colours + 1];
+        for (int v = 0; v < n; v++) colourStart[colour[v] + 1]++;
+        for (int c = 0; c < colours; c++) colourStart[c + 1] += colourStart[c];
+        order = new int[n];
+        colourOf = colour;
+        int[] fill = Arrays.copyOf(colourStart, colours);
+        for (int v = 0; v < n; v++) order[fill[colour[v]]++] = v;
+    }
+
+    /** For each particle, the entries element·arity + slot of the elements it is in (CSR, start filled). */
+    private int[] incidences(int[] elementParticle, int arity, int[] start) {
+        for (int e = 0; e < elementParticle.length; e++) if (elementParticle[e] >= 0) start[elementParticle[e] + 1]++;
+        for (int v = 0; v < n; v++) start[v + 1] += start[v];
+        int[] of = new int[start[n]], fill = Arrays.copyOf(start, n);
+        for (int e = 0; e < elementParticle.length; e++) if (elementParticle[e] >= 0) of[fill[elementParticle[e]]++] = e;
+        return of;
+    }
+
+    /** Lowers each particle's step limit to its distance (now, at rest) from every particle it shares an element with. */
+    private void limitSteps(int[] start, int[] of, int[] elementParticle, int arity) {
+        final double[] x = particles.x;
+        for (int v = 0; v < n; v++)
+            for (int k = start[v]; k < start[v + 1]; k++) {
+                int base = of[k] - of[k] % arity;
+                for (int q = 0; q < arity; q++) {
+                    int u = elementParticle[base + q];
+                    if (u < 0 || u == v) continue;
+                    double dx = x[3 * v] - x[3 * u], dy = x[3 * v + 1] - x[3 * u + 1], dz = x[3 * v + 2] - x[3 * u + 2];
+                    double d = Math.sqrt(dx * dx + dy * dy + dz * dz);
+                    if (d > 0) stepLimit[v] = Math.min(stepLimit[v], d);
+                }
+            }
+    }
+
+    private static void markNeighbours(int v, int[] start, int[] of, int[] elementParticle, int arity, int[] colour, BitSet used) {
+        for (int k = start[v]; k < start[v + 1]; k++) {
+            int base = of[k] - of[k] % arity;
+            for (int q = 0; q < arity; q++) {
+                int p = elementParticle[base + q];
+                if (p >= 0 && colour[p] >= 0) used.set(colour[p]);
+            }
+        }
+    }
+
+    int colours() { return colourStart.length - 1; }
+
+    /** Stiffnesses from the blocks' compliances (a fabric swap or a fit may have changed them since the last step). */
+    private void refreshStiffness() {
+        for (int t = 0; t < triBlock.length; t++) {
+            MembraneBlock m = triBlock[t];
+            int i = triRow[t];
+            double[] r = m.row;
+            double k0 = 1 / m.compliance(i), k1 = 1 / m.compliance(i + 1), k2 = 1 / m.compliance(i + 2);
+            // K = Σ_r r rᵀ/α_r for the rows (l₀₀, l₁₀, 0), (0, l₁₁, 0), (0, 0, l₂₂).
+            double l00 = r[3 * i], l10 = r[3 * i + 1], l11 = r[3 * i + 4], l22 = r[3 * i + 8];
+            triK[4 * t] = l00 * l00 * k0;
+            triK[4 * t + 1] = l00 * l10 * k0;
+            triK[4 * t + 2] = l10 * l10 * k0 + l11 * l11 * k1;
+            triK[4 * t + 3] = l22 * l22 * k2;
+        }
+        for (int h = 0; h < hingeBlock.length; h++)
+            for (int a = 0; a < 3; a++) hingeStiffness[3 * h + a] = 1 / hingeBlock[h].compliance(3 * hingeUnit[h] + a);
+        for (int s = 0; s < springBlock.length; s++) springStiffness[s] = 1 / springBlock[s].compliance(springRow[s]);
+    }
+
+    @Override public void solve(int substep, int iterations) {
+        if (substep == 0) refreshStiffness();
+        final double h = ctx.h, h2 = h * h;
+        final double[] x = particles.x, w = particles.w, f = particles.force, y = target;
+        final double gx = settings.gravityX(), gy = settings.gravityY(), gz = settings.gravityZ();
+        // y is where the prediction put the free particles; the iteration starts at x_prev + h v, without
+        // this substep's external acceleration: at rest that is the rest, a fixed point.
+        for (int i = 0; i < n; i++) {
+            final int k = 3 * i;
+            y[k] = x[k]; y[k + 1] = x[k + 1]; y[k + 2] = x[k + 2];
+            final double wi = w[i];
+            if (wi == 0) continue;
+            x[k] -= h2 * (gx + wi * f[k]);
+            x[k + 1] -= h2 * (gy + wi * f[k + 1]);
+            x[k + 2] -= h2 * (gz + wi * f[k + 2]);
+        }
+        contactOf = contacts.byParticle(n, contactStart, contactOf);
+        this.iterations = iterations;
+        inverseH2 = 1 / h2;
+        if (team != null) {
+            team.run(this);
+            return;
+        }
+        listener.afterSweep(sim, substep, -1);
+        for (int it = 0; it < iterations; it++) {
+            System.arraycopy(x, 0, snapshot, 0, 3 * n);
+            for (int c = 0, nc = colours(); c < nc; c++) solveColour(c, 0, 1);
+            rest.sweep(particles, ctx);
+            listener.afterSweep(sim, substep, it);
+        }
+    }
+
+    /** A substep's iterations on the team: each colour split into shares, the projected blocks on the caller. */
+    @Override public void work(int id, Team t) {
+        final int threads = t.threads(), colours = colours();
+        final double[] x = particles.x;
+        for (int it = 0; it < iterations; it++) {
+            int lo = (int) ((long) 3 * n * id / threads), hi = (int) ((long) 3 * n * (id + 1) / threads);
+            System.arraycopy(x, lo, snapshot, lo, hi - lo);
+            t.await();
+            for (int c = 0; c < colours; c++) {
+                solveColour(c, id, threads);
+                t.await();
+            }
+            if (id == 0) rest.sweep(particles, ctx);
+            t.await();
+        }
+    }
+
+    /** The particles of colour c, share id of {@code shares} (each thread takes a contiguous share). */
+    void solveColour(int c, int id, int shares) {
+        int from = colourStart[c], size = colourStart[c + 1] - from;
+        int lo = from + (int) ((long) size * id / shares), hi = from + (int) ((long) size * (id + 1) / shares);
+        for (int k = lo; k < hi; k++) solveParticle(order[k], inverseH2);
+    }
+
+    /** One Newton step of particle v on the step's energy with every other particle held. */
+    private void solveParticle(int v, double inverseH2) {
+        final double[] x = particles.x, y = target;
+        final double wv = particles.w[v];
+        if (wv == 0) return;
+        final int kv = 3 * v;
+        final double inertia = inverseH2 / wv;
+        double fx = -inertia * (x[kv] - y[kv]), fy = -inertia * (x[kv + 1] - y[kv + 1]), fz = -inertia * (x[kv + 2] - y[kv + 2]);
+        double h00 = inertia, h01 = 0, h02 = 0, h11 = inertia, h12 = 0, h22 = inertia;
+
+        // Membrane triangles: U = ½ εᵀ K ε, ε = (E_uu, E_vv, γ); ∂ε/∂x_v = (a f_u, b f_v, a f_v + b f_u).
+        for (int e = triStart[v], end = triStart[v + 1]; e < end; e++) {
+            final int t = triOf[e] / 3, slot = triOf[e] - 3 * t;
+            final int a0 = 3 * triParticle[3 * t], a1 = 3 * triParticle[3 * t + 1], a2 = 3 * triParticle[3 * t + 2];
+            final double P = triRest[4 * t], Q = triRest[4 * t + 1], R = triRest[4 * t + 2], S = triRest[4 * t + 3];
+            final double a = slot == 0 ? -P - R : slot == 1 ? P : R, b = slot == 0 ? -Q - S : slot == 1 ? Q : S;
+            double e1x = x[a1] - x[a0], e1y = x[a1 + 1] - x[a0 + 1], e1z = x[a1 + 2] - x[a0 + 2];
+            double e2x = x[a2] - x[a0], e2y = x[a2 + 1] - x[a0 + 1], e2z = x[a2 + 2] - x[a0 + 2];
+            double ux = e1x * P + e2x * R, uy = e1y * P + e2y * R, uz = e1z * P + e2z * R;
+            double wx = e1x * Q + e2x * S, wy = e1y * Q + e2y * S, wz = e1z * Q + e2z * S;
+            double uu = ux * ux + uy * uy + uz * uz, ww = wx * wx + wy * wy + wz * wz, uw = ux * wx + uy * wy + uz * wz;
+            double euu = 0.5 * (uu - 1), eww = 0.5 * (ww - 1);
+            final double k00 = triK[4 * t], k01 = triK[4 * t + 1], k11 = triK[4 * t + 2], k22 = triK[4 * t + 3];
+            double s0 = k00 * euu + k01 * eww, s1 = k01 * euu + k11 * eww, s2 = k22 * uw; // σ = K ε (K has no normal–shear coupling)
+            double cu = s0 * a + s2 * b, cw = s1 * b + s2 * a;                          // ∂U/∂x_v = cu f_u + cw f_v
+            fx -= cu * ux + cw * wx; fy -= cu * uy + cw * wy; fz -= cu * uz + cw * wz;
+            // Gauss–Newton: Bᵀ K B with B's columns a f_u, b f_v, a f_v + b f_u, written in the basis (f_u, f_v).
+            double muu = a * a * k00 + b * b * k22, muw = a * b * (k01 + k22), mww = b * b * k11 + a * a * k22;
+            double geometric = s0 * a * a + s1 * b * b + 2 * s2 * a * b;
+            if (geometric < 0) geometric = 0;
+            h00 += muu * ux * ux + 2 * muw * ux * wx + mww * wx * wx + geometric;
+            h11 += muu * uy * uy + 2 * muw * uy * wy + mww * wy * wy + geometric;
+            h22 += muu * uz * uz + 2 * muw * uz * wz + mww * wz * wz + geometric;
+            h01 += muu * ux * uy + muw * (ux * wy + wx * uy) + mww * wx * wy;
+            h02 += muu * ux * uz + muw * (ux * wz + wx * uz) + mww * wx * wz;
+            h12 += muu * uy * uz + muw * (uy * wz + wy * uz) + mww * wy * wz;
+        }
+
+        // Quadratic hinges: U = ½ Σ_a k_a C_a², C = Σ c_k x_k; ∂C_a/∂x_v = c_v e_a.
+        for (int e = hingeStart[v], end = hingeStart[v + 1]; e < end; e++) {
+            final int hg = hingeOf[e] >> 2, slot = hingeOf[e] & 3, base = 4 * hg;
+            final int q0 = 3 * hingeParticle[base], q1 = 3 * hingeParticle[base + 1], q2 = 3 * hingeParticle[base + 2], q3 = 3 * hingeParticle[base + 3];
+            final double c0 = hingeCoefficient[base], c1 = hingeCoefficient[base + 1], c2 = hingeCoefficient[base + 2], c3 = hingeCoefficient[base + 3];
+            final double cv = hingeCoefficient[base + slot];
+            double cx = c0 * x[q0] + c1 * x[q1] + c2 * x[q2] + c3 * x[q3];
+            double cy = c0 * x[q0 + 1] + c1 * x[q1 + 1] + c2 * x[q2 + 1] + c3 * x[q3 + 1];
+            double cz = c0 * x[q0 + 2] + c1 * x[q1 + 2] + c2 * x[q2 + 2] + c3 * x[q3 + 2];
+            final double kx = hingeStiffness[3 * hg], ky = hingeStiffness[3 * hg + 1], kz = hingeStiffness[3 * hg + 2];
+            fx -= kx * cv * cx; fy -= ky * cv * cy; fz -= kz * cv * cz;
+            double cv2 = cv * cv;
+            h00 += kx * cv2; h11 += ky * cv2; h22 += kz * cv2;
+        }
+
+        // Springs: U = ½ k (|d| − L)², d = x_v − x_other; H = k (n nᵀ + [C/|d|]₊ (I − n nᵀ)).
+        for (int e = springStart[v], end = springStart[v + 1]; e < end; e++) {
+            final int sp = springOf[e] >> 1, slot = springOf[e] & 1;
+            final int other = 3 * springParticle[2 * sp + 1 - slot];
+            double dx = x[kv] - x[other], dy = x[kv + 1] - x[other + 1], dz = x[kv + 2] - x[other + 2];
+            double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+            if (len < DistanceBlock.MIN_LENGTH) continue;
+            final double k = springStiffness[sp], inv = 1 / len;
+            double nx = dx * inv, ny = dy * inv, nz = dz * inv, C = len - springRest[sp];
+            fx -= k * C * nx; fy -= k * C * ny; fz -= k * C * nz;
+            double tangential = C > 0 ? k * C * inv : 0, along = k - tangential;
+            h00 += along * nx * nx + tangential; h11 += along * ny * ny + tangential; h22 += along * nz * nz + tangential;
+            h01 += along * nx * ny; h02 += along * nx * nz; h12 += along * ny * nz;
+        }
+
+        // Tethers, a stiff penalty on the stretch past the rest distance to a pinned anchor: U = ½ k C₊².
+        for (int e = tetherStart[v], end = tetherStart[v + 1]; e < end; e++) {
+            final int tt = tetherOf[e], ka = 3 * tetherAnchor[tt];
+            double dx = x[kv] - x[ka], dy = x[kv + 1] - x[ka + 1], dz = x[kv + 2] - x[ka + 2];
+            double len = Math.sqrt(dx * dx + dy * dy + dz * dz), C = len - tetherDistance[tt];
+            if (C <= 0 || len < DistanceBlock.MIN_LENGTH) continue;
+            final double k = HARD_STIFFNESS * inertia, inv = 1 / len;
+            double nx = dx * inv, ny = dy * inv, nz = dz * inv;
+            fx -= k * C * nx; fy -= k * C * ny; fz -= k * C * nz;
+            double tangential = k * C * inv, along = k - tangential;
+            h00 += along * nx * nx + tangential; h11 += along * ny * ny + tangential; h22 += along * nz * nz + tangential;
+            h01 += along * nx * ny; h02 += along * nx * nz; h12 += along * ny * nz;
+        }
+
+        // Compliant attachments, U = ½|x − t|²/α (a hard one is met after the step).
+        for (int e = attachedStart[v], end = attachedStart[v + 1]; e < end; e++) {
+            final int i = attachedOf[e];
+            final double alpha = attachments.compliance(i);
+            if (!(alpha > 0)) continue;
+            final double k = 1 / alpha;
+            fx -= k * (x[kv] - attachments.target[3 * i]); fy -= k * (x[kv + 1] - attachments.target[3 * i + 1]); fz -= k * (x[kv + 2] - attachments.target[3 * i + 2]);
+            h00 += k; h11 += k; h22 += k;
+        }
+
+        // Contacts between two particles of the cloth: a stiff penalty ½k C² while C = |x_v − x_u| − t < 0, with
+        // friction as a dissipative force on the pair's tangential slip over the substep, its normal force lagged
+        // (Li et al. 2020, "Incremental Potential Contact", §5): f_t = −μ k(−C) f₁(|u|)/|u| · u, f₁ smoothing the
+        // stick (|u| < ε) into the slide. The partner is read where it is now if it has another colour (solved
+        // before or after, never during), else as it was when the iteration began.
+        for (int e = contactStart[v], end = contactStart[v + 1]; e < end; e++) {
+            final int k = contactOf[e];
+            final Collider with = contacts.with(k);
+            if (!(with instanceof SelfCollision)) continue;
+            final SelfCollision self = (SelfCollision) with;
+            final int u = self.other(contacts.entry(k), v), ku = 3 * u;
+            final double[] xu = colourOf[u] == colourOf[v] ? snapshot : x;
+            double dx = x[kv] - xu[ku], dy = x[kv + 1] - xu[ku + 1], dz = x[kv + 2] - xu[ku + 2];
+            double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+            double C = len - self.thickness;
+            if (C >= 0 || len < DistanceBlock.MIN_LENGTH) continue;
+            final double kc = CONTACT_STIFFNESS * inverseH2 / (wv + particles.w[u]);
+            double nx = dx / len, ny = dy / len, nz = dz / len, push = -kc * C;
+            fx += push * nx; fy += push * ny; fz += push * nz;
+            h00 += kc * nx * nx; h11 += kc * ny * ny; h22 += kc * nz * nz;
+            h01 += kc * nx * ny; h02 += kc * nx * nz; h12 += kc * ny * nz;
+            final double[] prev = particles.prev;
+            double rx = (x[kv] - prev[kv]) - (xu[ku] - prev[ku]), ry = (x[kv + 1] - prev[kv + 1]) - (xu[ku + 1] - prev[ku + 1]), rz = (x[kv + 2] - prev[kv + 2]) - (xu[ku + 2] - prev[ku + 2]);
+            double along = rx * nx + ry * ny + rz * nz;
+            double tx = rx - along * nx, ty = ry - along * ny, tz = rz - along * nz;
+            double slip = Math.sqrt(tx * tx + ty * ty + tz * tz), epsilon = SLIP * ctx.h;
+            double mu = slip < epsilon ? self.staticFriction : self.kineticFriction;
+            // f₁(s)/s: 2/ε − s/ε² below ε, 1/s above.
+            double f1OverS = slip < epsilon ? 2 / epsilon - slip / (epsilon * epsilon) : 1 / slip;
+            double kt = mu * push * f1OverS;
+            if (kt > 0) {
+                fx -= kt * tx; fy -= kt * ty; fz -= kt * tz;
+                // The tangent plane's projector I − n nᵀ, times kt.
+                h00 += kt * (1 - nx * nx); h11 += kt * (1 - ny * ny); h22 += kt * (1 - nz * nz);
+                h01 -= kt * nx * ny; h02 -= kt * nx * nz; h12 -= kt * ny * nz;
+            }
+        }
+
+        // H Δ = f by the symmetric 3 × 3 inverse (H is positive definite: inertia plus positive terms).
+        double c00 = h11 * h22 - h12 * h12, c01 = h02 * h12 - h01 * h22, c02 = h01 * h12 - h02 * h11;
+        double det = h00 * c00 + h01 * c01 + h02 * c02;
+        if (!(det > 0)) return;
+        double c11 = h00 * h22 - h02 * h02, c12 = h01 * h02 - h00 * h12, c22 = h00 * h11 - h01 * h01;
+        double inv = 1 / det;
+        double dx = (c00 * fx + c01 * fy + c02 * fz) * inv, dy = (c01 * fx + c11 * fy + c12 * fz) * inv, dz = (c02 * fx + c12 * fy + c22 * fz) * inv;
+        double step = Math.sqrt(dx * dx + dy * dy + dz * dz), limit = stepLimit[v];
+        if (step > limit) { double scale = limit / step; dx *= scale; dy *= scale; dz *= scale; }
+        x[kv] += dx; x[kv + 1] += dy; x[kv + 2] += dz;
+        // Its hard attachments and contacts with solids at once, so the particles solved after it never see it
+        // off its target or inside a solid.
+        for (int e = attachedStart[v], end = attachedStart[v + 1]; e < end; e++)
+            if (!(attachments.compliance(attachedOf[e]) > 0)) attachments.project(attachedOf[e], particles, ctx);
+        for (int e = contactStart[v], end = contactStart[v + 1]; e < end; e++)
+            if (!(contacts.with(contactOf[e]) instanceof SelfCollision)) contacts.projectOne(particles, contactOf[e], v, ctx.h);
+    }
+
+    /** The same solve, the state checked after every particle's step (which then names the energies' first family). */
+    @Override public SolveStage probed(StepProbe probe) {
+        return new SolveStage() {
+            @Override public void solve(int substep, int iterations) {
+                VertexBlockDescent.this.solve(substep, 0);
+                for (int it = 0; it < iterations; it++) {
+                    System.arraycopy(particles.x, 0, snapshot, 0, 3 * n);
+                    for (int k = 0; k < n; k++) {
+                        solveParticle(order[k], inverseH2);
+                        probe.check(order[k], firstFamily);
+                    }
+                    rest.sweep(particles, ctx, probe);
+                    for (int k = 0; k < contacts.count(); k++) {
+                        contacts.project(particles, ctx, k);
+                        probe.check(contacts.particle(k), ConstraintFamily.COLLISION);
+                    }
+                }
+            }
+
+            @Override public SolveStage probed(StepProbe p) { return this; }
+        };
+    }
+}
