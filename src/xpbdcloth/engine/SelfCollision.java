@@ -21,16 +21,17 @@ import java.util.Arrays;
  * Degenerate case: two particles at the same point have no normal; they are left to the cloth.
  *
  * <p>Candidates come from a spatial hash over flat arrays (a power-of-two table of at least 2n buckets,
- * counting-sorted, positions copied in bucket order so a bucket's candidates are read one after another),
- * rebuilt every substep from the predicted positions, or every few ({@link #rebuildEvery}). A pair is a
- * candidate when closer than t + {@link ContactSet#SLACK}·t + both particles' motion in the prediction
- * (times the substeps until the next rebuild); a bucket two of the 27 neighbouring cells share is
- * visited once. The arrays grow only when the cloth needs more (more pairs than ever before), so steady
- * stepping allocates nothing. Measured on drop-fold, 64², 4 × 10 sweeps (gradle bench -Pfull): finding
- * the pairs every substep costs about as much as the cloth's own constraint solve; every 5 substeps,
- * less than half, with no crossing pair in either. Where it fails: a particle passing through the middle
- * of a triangle between three others far apart (the cloth's spacing larger than t) is not caught: this
- * is particle–particle, not point–triangle.
+ * counting-sorted, positions copied in bucket order so a bucket's candidates are read one after another)
+ * and are kept while they stay valid, as a molecular-dynamics Verlet list is: a build lists the pairs
+ * closer than R = t + {@link ContactSet#SLACK}·t + a skin s = t (plus both particles' motion in the
+ * prediction, for fast ones), and while no particle has drifted, with its motion this substep, more than
+ * s/2 from where the build saw it, no pair outside the list can come within t: the list is used again
+ * and the hash is not rebuilt. A cloth at rest or sliding slowly rebuilds rarely; one falling fast, every
+ * substep. Cells are R wide: a fast particle searches the cells its own reach spans (each pair is found
+ * by the faster of its two), so one fast particle no longer widens every cell. The arrays grow only when
+ * the cloth needs more (more pairs than ever before), so steady stepping allocates nothing.
+ * Where it fails: a particle passing through the middle of a triangle between three others far apart
+ * (the cloth's spacing larger than t) is not caught: this is particle–particle, not point–triangle.
  */
 public final class SelfCollision extends Collider {
     /** Pairs closer than this many thicknesses at rest are neighbours: the cloth's own constraints keep them apart. */
@@ -40,16 +41,17 @@ public final class SelfCollision extends Collider {
     // The hash: particles sorted by cell; cellStart[h] .. cellStart[h + 1] - 1 index into sorted.
     private int[] cellStart = new int[0], sorted = new int[0], cellOf = new int[0];
     // The positions in the hash's order (candidates in a bucket are read one after another), each
-    // particle's reach (its motion in the prediction, over the substeps until the next rebuild), and the
-    // last particle (plus one) whose query visited each bucket.
+    // particle's reach (its motion in the prediction), and the last particle (plus one) whose query
+    // visited each bucket.
     private double[] sortedX = new double[0], reachOf = new double[0];
     private int[] visitedBy = new int[0];
-    // Candidate pairs found this substep.
+    // The pairs of the last build, and where the build saw each particle.
     private int[] pairI = new int[16], pairJ = new int[16];
     private int pairs;
-    /** The hash is rebuilt every this many substeps; in between, the pairs found last are checked again. */
-    private int rebuildEvery = 1;
-    private int sinceRebuild;
+    private double[] built = new double[0];
+    private boolean listed;
+    /** Hash rebuilds since this self-collision was made (the list kept otherwise). */
+    private long builds;
 
     /**
      * @param restPositions the rest mesh, xyz interleaved (pairs closer than 2t here never collide)
@@ -68,69 +70,71 @@ public final class SelfCollision extends Collider {
     /** The particle count of the rest mesh it was made for. */
     public int restParticles() { return rest.length / 3; }
 
-    /** Pairs found in the last substep. */
+    /** Pairs listed at the last build (each is a candidate until the next). */
     public int pairCount() { return pairs; }
 
-    /**
-     * Rebuilds the hash only every {@code substeps} substeps (1, the default, is every substep). The
-     * pairs found then reach as far as each particle's motion in the prediction carries it over that many
-     * substeps, and are checked again in the substeps between. Cheaper, but a pair that closes faster
-     * than its motion at the rebuild said is missed until the next one.
-     */
-    public SelfCollision rebuildEvery(int substeps) {
-        if (substeps < 1 || substeps > 100) throw new IllegalArgumentException("rebuildEvery must be in [1, 100] substeps, was " + substeps);
-        rebuildEvery = substeps;
-        sinceRebuild = 0;
-        return this;
-    }
+    /** Hash rebuilds since this self-collision was made: the list is kept while it stays valid. */
+    public long builds() { return builds; }
 
-    public int rebuildEvery() { return rebuildEvery; }
+    /** The skin s: pairs up to t + slack + s apart are listed, and the list holds while no particle drifts s/2. */
+    double skin() { return thickness; }
 
     @Override void findContacts(Particles p, double h, ContactSet contacts) {
-        if (sinceRebuild > 0) {
-            sinceRebuild = (sinceRebuild + 1) % rebuildEvery;
-            for (int k = 0; k < pairs; k++) contacts.add(pairI[k], k, this);
-            return;
-        }
-        sinceRebuild = 1 % rebuildEvery;
         final int n = p.count();
         final double[] x = p.x, prev = p.prev;
-        final double ahead = rebuildEvery;
-        if (reachOf.length < n) reachOf = new double[n];
-        double maxReach = 0;
+        if (reachOf.length < n) { reachOf = new double[n]; built = new double[3 * n]; listed = false; }
+        double drift = 0;
         for (int i = 0; i < n; i++) {
-            reachOf[i] = ahead * motion(x, prev, 3 * i);
-            maxReach = Math.max(maxReach, reachOf[i]);
+            final int k = 3 * i;
+            reachOf[i] = motion(x, prev, k);
+            if (listed) {
+                double dx = x[k] - built[k], dy = x[k + 1] - built[k + 1], dz = x[k + 2] - built[k + 2];
+                drift = Math.max(drift, Math.sqrt(dx * dx + dy * dy + dz * dz) + reachOf[i]);
+            }
         }
-        final double base = thickness * (1 + ContactSet.SLACK);
-        final double cell = base + 2 * maxReach;
+        if (!listed || drift > 0.5 * skin()) build(p);
+        for (int k = 0; k < pairs; k++) contacts.add(pairI[k], k, this);
+    }
+
+    /** Lists every pair that can come within t before some particle drifts s/2 from here. */
+    private void build(Particles p) {
+        final int n = p.count();
+        final double[] x = p.x, w = p.w;
+        System.arraycopy(x, 0, built, 0, 3 * n);
+        listed = true;
+        builds++;
+        final double base = thickness * (1 + ContactSet.SLACK) + skin();
+        final double cell = base;
         buildHash(x, n, cell);
         pairs = 0;
         final int table = cellStart.length - 1;
-        final double[] sx = sortedX, w = p.w;
+        final double[] sx = sortedX;
         final double neighbours = NEIGHBOURHOOD * NEIGHBOURHOOD * thickness * thickness;
         for (int i = 0; i < n; i++) {
             final int k = 3 * i;
-            final double xi = x[k], yi = x[k + 1], zi = x[k + 2], mi = reachOf[i], farthest = base + mi + maxReach;
+            final double xi = x[k], yi = x[k + 1], zi = x[k + 2], mi = reachOf[i];
+            // A pair is found by the faster of the two (by index when equally fast): i searches as far as a
+            // partner as fast as itself could need, base + 2 mᵢ, which spans r cells either way.
+            final int r = (int) Math.ceil((base + 2 * mi) / cell);
             final int cx = cellIndex(xi, cell), cy = cellIndex(yi, cell), cz = cellIndex(zi, cell);
-            for (int dx = -1; dx <= 1; dx++)
-                for (int dy = -1; dy <= 1; dy++)
-                    for (int dz = -1; dz <= 1; dz++) {
+            for (int dx = -r; dx <= r; dx++)
+                for (int dy = -r; dy <= r; dy++)
+                    for (int dz = -r; dz <= r; dz++) {
                         final int bucket = hash(cx + dx, cy + dy, cz + dz, table);
-                        // Two of the 27 cells can share a bucket: visit it once, or its pairs would be found twice.
+                        // Two of the cells searched can share a bucket: visit it once, or its pairs would be found twice.
                         if (visitedBy[bucket] == i + 1) continue;
                         visitedBy[bucket] = i + 1;
                         for (int s = cellStart[bucket], end = cellStart[bucket + 1]; s < end; s++) {
                             final int j = sorted[s];
-                            if (j <= i) continue;
+                            final double mj = reachOf[j];
+                            if (j == i || mj > mi || (mj == mi && j < i)) continue;
                             final double ex = xi - sx[3 * s], ey = yi - sx[3 * s + 1], ez = zi - sx[3 * s + 2], d2 = ex * ex + ey * ey + ez * ez;
-                            if (d2 >= farthest * farthest) continue; // cheap bound first: most candidates end here
-                            final double reach = base + mi + reachOf[j];
+                            final double reach = base + mi + mj;
                             if (d2 >= reach * reach || w[i] + w[j] == 0) continue;
                             final int m = 3 * j;
                             final double rx = rest[k] - rest[m], ry = rest[k + 1] - rest[m + 1], rz = rest[k + 2] - rest[m + 2];
                             if (rx * rx + ry * ry + rz * rz < neighbours) continue; // neighbours at rest
-                            addPair(i, j, contacts);
+                            addPair(Math.min(i, j), Math.max(i, j));
                         }
                     }
         }
@@ -141,11 +145,10 @@ public final class SelfCollision extends Collider {
         return Math.sqrt(mx * mx + my * my + mz * mz);
     }
 
-    private void addPair(int i, int j, ContactSet contacts) {
+    private void addPair(int i, int j) {
         if (pairs == pairI.length) { pairI = Arrays.copyOf(pairI, 2 * pairs); pairJ = Arrays.copyOf(pairJ, 2 * pairs); }
         pairI[pairs] = i;
         pairJ[pairs] = j;
-        contacts.add(i, pairs, this);
         pairs++;
     }
 

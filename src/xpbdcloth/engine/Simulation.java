@@ -372,7 +372,7 @@ public final class Simulation {
         SolverType type = settings.solver();
         boolean coloured = settings.order() == ConstraintOrder.COLOURED;
         int threads = settings.threads();
-        boolean pcg = type == SolverType.JACOBI_PCG || type == SolverType.MULTIGRID_PCG;
+        boolean pcg = type.isGlobal();
         GlobalSolver g = pcg ? globalSolver() : null; // remade if the PCG settings changed
         if (solve != null && solvedFor.matches(type, coloured, threads, sweepListener, g)) return solve;
         if (type == SolverType.VERTEX_BLOCK_DESCENT) {

@@ -15,6 +15,9 @@ public enum SolverType {
      */
     VERTEX_BLOCK_DESCENT;
 
+    /** Whether an iteration is a linear solve over the whole cloth (and costs like one). */
+    public boolean isGlobal() { return this == JACOBI_PCG || this == MULTIGRID_PCG; }
+
     /** The name users type and read: gauss-seidel, jacobi-pcg, multigrid-pcg, vertex-block-descent. */
     public String label() { return name().toLowerCase(java.util.Locale.ROOT).replace('_', '-'); }
 }

@@ -181,14 +181,12 @@ public final class Preset {
         }
     }
 
-    /** The cloth's thickness against itself (m), the friction between its layers, and how often its hash is rebuilt (substeps). */
+    /** The cloth's thickness against itself (m) and the friction between its layers. */
     public static final class SelfCollisionSpec {
         public final double thickness, staticFriction, kineticFriction;
-        public final int rebuildEvery;
 
-        public SelfCollisionSpec(double thickness, double staticFriction, double kineticFriction, int rebuildEvery) {
+        public SelfCollisionSpec(double thickness, double staticFriction, double kineticFriction) {
             this.thickness = thickness; this.staticFriction = staticFriction; this.kineticFriction = kineticFriction;
-            this.rebuildEvery = rebuildEvery;
         }
     }
 

@@ -35,7 +35,7 @@ import xpbdcloth.mesh.ObjReader;
  */
 public final class PresetLoader {
     /** The presets that ship with the project, in the order the sketch offers them. */
-    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth", "table", "arm", "drop-fold", "fabric", "flag-fabric", "drape");
+    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth", "table", "arm", "drop-fold", "fabric", "flag-fabric", "drape", "denim-fold");
 
     private static final ObjectMapper JSON = new ObjectMapper()
             .enable(JsonParser.Feature.STRICT_DUPLICATE_DETECTION);
@@ -257,7 +257,7 @@ public final class PresetLoader {
             if (ms != null) for (Node m : array(ms, Limits.MAX_PIN_MOTIONS)) motions.add(pinMotion(m, cloth));
             Node w = optional(root, "wind");
             long particles = cloth.mesh != null ? cloth.mesh.vertexCount() : (long) cloth.columns * cloth.rows;
-            String tooMuch = Limits.workProblem(particles, solver.iterations, solver.substeps, spheres.size() + planes.size() + solids.size(), solver.type != xpbdcloth.engine.SolverType.GAUSS_SEIDEL);
+            String tooMuch = Limits.workProblem(particles, solver.iterations, solver.substeps, spheres.size() + planes.size() + solids.size(), solver.type.isGlobal());
             if (tooMuch != null) throw fail("solver", tooMuch);
             return new Preset(file, name, description, cloth, families, solver, spheres, planes, solids, self, motions, w == null ? null : wind(w), fabric, aerodynamics(optional(root, "aerodynamics")));
         }
@@ -542,16 +542,14 @@ public final class PresetLoader {
 
         /** The cloth's thickness against itself: no more than its shortest edge at rest. */
         Preset.SelfCollisionSpec selfCollision(Node n, Preset.Cloth cloth) {
-            object(n, Set.of("thickness", "staticFriction", "kineticFriction", "rebuildEvery"));
+            object(n, Set.of("thickness", "staticFriction", "kineticFriction"));
             Node t = required(n, "thickness");
             double thickness = number(t, Limits.THICKNESS);
             double edge = cloth.shortestEdge();
             if (thickness > edge)
                 throw fail(t.path, String.format(java.util.Locale.ROOT, "must be at most the cloth's shortest edge %.4g m, was %.4g m: thicker, neighbouring"
                         + " particles that are not neighbours at rest would hold the cloth apart from itself in steps", edge, thickness));
-            Node every = optional(n, "rebuildEvery");
-            return new Preset.SelfCollisionSpec(thickness, number(required(n, "staticFriction"), Limits.FRICTION), number(required(n, "kineticFriction"), Limits.FRICTION),
-                    every == null ? 1 : integer(every, Limits.SUBSTEPS));
+            return new Preset.SelfCollisionSpec(thickness, number(required(n, "staticFriction"), Limits.FRICTION), number(required(n, "kineticFriction"), Limits.FRICTION));
         }
 
         /** A direction: components in [-1, 1], not (almost) zero. */

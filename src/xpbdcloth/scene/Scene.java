@@ -133,7 +133,7 @@ public final class Scene {
 
     /** The cloth's self-collision from its rest mesh. */
     public static SelfCollision selfCollision(Cloth cloth, Preset.SelfCollisionSpec s) {
-        return new SelfCollision(cloth.mesh().positions(), s.thickness, s.staticFriction, s.kineticFriction).rebuildEvery(s.rebuildEvery);
+        return new SelfCollision(cloth.mesh().positions(), s.thickness, s.staticFriction, s.kineticFriction);
     }
 
     /** A built-in scene by name. */

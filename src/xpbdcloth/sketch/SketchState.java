@@ -221,7 +221,7 @@ public final class SketchState {
     private boolean refusedAsTooMuchWork(int iterations, int substeps, SolverType solver, String what) {
         for (Scene s : running()) {
             long particles = s.cloth().particles().count();
-            if (Limits.workProblem(particles, iterations, substeps, s.simulation().colliderCount(), solver != SolverType.GAUSS_SEIDEL) == null) continue;
+            if (Limits.workProblem(particles, iterations, substeps, s.simulation().colliderCount(), solver.isGlobal()) == null) continue;
             error(what + " would ask too much of a step for " + particles + " particles (the presets' work limit): unchanged");
             return true;
         }
@@ -397,7 +397,7 @@ public final class SketchState {
 
     /** The preset's self-collision, or half the cloth's shortest edge with layers' friction 0.3 / 0.2. */
     Preset.SelfCollisionSpec selfCollisionSpec() {
-        return preset.selfCollision != null ? preset.selfCollision : new Preset.SelfCollisionSpec(0.5 * preset.cloth.shortestEdge(), 0.3, 0.2, 1);
+        return preset.selfCollision != null ? preset.selfCollision : new Preset.SelfCollisionSpec(0.5 * preset.cloth.shortestEdge(), 0.3, 0.2);
     }
 
     public boolean paused() { return paused; }
@@ -472,7 +472,7 @@ public final class SketchState {
 
     /** What helps a tearing cloth: more sweeps while twice as many stay within the work limit, else pins or size. */
     static String tearingAdvice(long particles, int iterations, int substeps, int spheres, SolverType solver) {
-        boolean moreAllowed = Limits.workProblem(particles, 2 * iterations, substeps, spheres, solver != SolverType.GAUSS_SEIDEL) == null;
+        boolean moreAllowed = Limits.workProblem(particles, 2 * iterations, substeps, spheres, solver.isGlobal()) == null;
         return moreAllowed ? "press u or i for more, pin an edge instead of corners, or load a smaller cloth"
                 : "the work limit allows no more sweeps: pin an edge instead of corners, or load a smaller cloth";
     }
