@@ -41,13 +41,16 @@ final class ContactSet {
         if (particle.length < n) { particle = new int[n]; entry = new int[n]; with = new Collider[n]; }
     }
 
-    /** The collide stage: this substep's candidates (the spheres' first), from the predicted positions and placed colliders. */
-    void collide(Particles p, List<Sphere> spheres, List<Plane> planes, List<RigidCollider> solids, SelfCollision self, double h) {
+    /**
+     * The collide stage: this substep's candidates (the spheres' first), from the predicted positions and
+     * placed colliders; the self-collision's list is made by the team's threads when there is one.
+     */
+    void collide(Particles p, List<Sphere> spheres, List<Plane> planes, List<RigidCollider> solids, SelfCollision self, double h, Team team) {
         count = 0;
         for (int s = 0, ns = spheres.size(); s < ns; s++) spheres.get(s).findContacts(p, h, this);
         for (int s = 0, ns = planes.size(); s < ns; s++) planes.get(s).findContacts(p, h, this);
         for (int s = 0, ns = solids.size(); s < ns; s++) solids.get(s).findContacts(p, h, this);
-        if (self != null) self.findContacts(p, h, this);
+        if (self != null) self.findContacts(p, this, team);
     }
 
     /** A candidate: particle i against collider c. */

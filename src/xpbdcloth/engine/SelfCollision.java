@@ -33,18 +33,16 @@ import java.util.Arrays;
  * Where it fails: a particle passing through the middle of a triangle between three others far apart
  * (the cloth's spacing larger than t) is not caught: this is particle–particle, not point–triangle.
  */
-public final class SelfCollision extends Collider {
+public final class SelfCollision extends Collider implements Team.Job {
     /** Pairs closer than this many thicknesses at rest are neighbours: the cloth's own constraints keep them apart. */
     static final double NEIGHBOURHOOD = 2;
     final double thickness;
     private final double[] rest;
     // The hash: particles sorted by cell; cellStart[h] .. cellStart[h + 1] - 1 index into sorted.
     private int[] cellStart = new int[0], sorted = new int[0], cellOf = new int[0];
-    // The positions in the hash's order (candidates in a bucket are read one after another), each
-    // particle's reach (its motion in the prediction), and the last particle (plus one) whose query
-    // visited each bucket.
+    // The positions in the hash's order (candidates in a bucket are read one after another) and each
+    // particle's reach (its motion in the prediction).
     private double[] sortedX = new double[0], reachOf = new double[0];
-    private int[] visitedBy = new int[0];
     // The pairs of the last build, and where the build saw each particle.
     private int[] pairI = new int[16], pairJ = new int[16];
     private int pairs;
@@ -52,6 +50,25 @@ public final class SelfCollision extends Collider {
     private boolean listed;
     /** Hash rebuilds since this self-collision was made (the list kept otherwise). */
     private long builds;
+    /** Each thread's own finds (particles split in ascending ranges, so their concatenation is the one-thread list). */
+    private Finds[] finds = {new Finds()};
+    private double buildBase, buildCell;
+    /** The particles of the build in progress, for the team's threads. */
+    private Particles buildParticles;
+
+    /** One thread's part of a build: its pairs and which buckets its current particle has visited. */
+    private static final class Finds {
+        int[] i = new int[16], j = new int[16];
+        int count;
+        int[] visitedBy = new int[0];
+
+        void add(int a, int b) {
+            if (count == i.length) { i = Arrays.copyOf(i, 2 * count); j = Arrays.copyOf(j, 2 * count); }
+            i[count] = a;
+            j[count] = b;
+            count++;
+        }
+    }
 
     /**
      * @param restPositions the rest mesh, xyz interleaved (pairs closer than 2t here never collide)
@@ -79,7 +96,10 @@ public final class SelfCollision extends Collider {
     /** The skin s: pairs up to t + slack + s apart are listed, and the list holds while no particle drifts s/2. */
     double skin() { return thickness; }
 
-    @Override void findContacts(Particles p, double h, ContactSet contacts) {
+    @Override void findContacts(Particles p, double h, ContactSet contacts) { findContacts(p, contacts, null); }
+
+    /** The collide stage: the listed pairs, listed anew when the list ran out, by the team's threads if given. */
+    void findContacts(Particles p, ContactSet contacts, Team team) {
         final int n = p.count();
         final double[] x = p.x, prev = p.prev;
         if (reachOf.length < n) { reachOf = new double[n]; built = new double[3 * n]; listed = false; }
@@ -92,25 +112,53 @@ public final class SelfCollision extends Collider {
                 drift = Math.max(drift, Math.sqrt(dx * dx + dy * dy + dz * dz) + reachOf[i]);
             }
         }
-        if (!listed || drift > 0.5 * skin()) build(p);
+        if (!listed || drift > 0.5 * skin()) build(p, team);
         for (int k = 0; k < pairs; k++) contacts.add(pairI[k], k, this);
     }
 
     /** Lists every pair that can come within t before some particle drifts s/2 from here. */
-    private void build(Particles p) {
+    private void build(Particles p, Team team) {
         final int n = p.count();
-        final double[] x = p.x, w = p.w;
-        System.arraycopy(x, 0, built, 0, 3 * n);
+        System.arraycopy(p.x, 0, built, 0, 3 * n);
         listed = true;
         builds++;
-        final double base = thickness * (1 + ContactSet.SLACK) + skin();
-        final double cell = base;
-        buildHash(x, n, cell);
+        buildBase = thickness * (1 + ContactSet.SLACK) + skin();
+        buildCell = buildBase;
+        buildHash(p.x, n, buildCell);
+        int threads = team == null ? 1 : team.threads();
+        if (finds.length != threads) {
+            finds = new Finds[threads];
+            for (int t = 0; t < threads; t++) finds[t] = new Finds();
+        }
+        for (Finds f : finds) {
+            f.count = 0;
+            if (f.visitedBy.length != cellStart.length - 1) f.visitedBy = new int[cellStart.length - 1];
+            else Arrays.fill(f.visitedBy, 0);
+        }
+        buildParticles = p;
+        if (team == null) find(p, 0, 1);
+        else team.run(this);
         pairs = 0;
+        for (Finds f : finds)
+            for (int k = 0; k < f.count; k++) addPair(f.i[k], f.j[k]);
+    }
+
+    /** A build's search on the team: each thread its share of the particles. */
+    @Override public void work(int id, Team team) {
+        find(buildParticles, id, team.threads());
+        team.await();
+    }
+
+    /** The pairs found by particles of share id (an ascending range), into that share's finds. */
+    private void find(Particles p, int id, int shares) {
+        final int n = p.count();
+        final double[] x = p.x, w = p.w, sx = sortedX;
+        final Finds out = finds[id];
+        final int[] visitedBy = out.visitedBy;
         final int table = cellStart.length - 1;
-        final double[] sx = sortedX;
+        final double base = buildBase, cell = buildCell;
         final double neighbours = NEIGHBOURHOOD * NEIGHBOURHOOD * thickness * thickness;
-        for (int i = 0; i < n; i++) {
+        for (int i = (int) ((long) n * id / shares), last = (int) ((long) n * (id + 1) / shares); i < last; i++) {
             final int k = 3 * i;
             final double xi = x[k], yi = x[k + 1], zi = x[k + 2], mi = reachOf[i];
             // A pair is found by the faster of the two (by index when equally fast): i searches as far as a
@@ -134,7 +182,7 @@ public final class SelfCollision extends Collider {
                             final int m = 3 * j;
                             final double rx = rest[k] - rest[m], ry = rest[k + 1] - rest[m + 1], rz = rest[k + 2] - rest[m + 2];
                             if (rx * rx + ry * ry + rz * rz < neighbours) continue; // neighbours at rest
-                            addPair(Math.min(i, j), Math.max(i, j));
+                            out.add(Math.min(i, j), Math.max(i, j));
                         }
                     }
         }
@@ -162,8 +210,7 @@ public final class SelfCollision extends Collider {
     /** Counting sort of the particles by hashed cell. */
     private void buildHash(double[] x, int n, double cell) {
         int table = Integer.highestOneBit(Math.max(1, 2 * n - 1)) << 1; // the power of two at or above 2n
-        if (cellStart.length != table + 1) { cellStart = new int[table + 1]; sorted = new int[n]; cellOf = new int[n]; sortedX = new double[3 * n]; visitedBy = new int[table]; }
-        Arrays.fill(visitedBy, 0);
+        if (cellStart.length != table + 1) { cellStart = new int[table + 1]; sorted = new int[n]; cellOf = new int[n]; sortedX = new double[3 * n]; }
         Arrays.fill(cellStart, 0);
         for (int i = 0; i < n; i++) {
             int k = 3 * i;

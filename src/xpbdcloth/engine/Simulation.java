@@ -336,7 +336,7 @@ public final class Simulation {
             attachments.glide((s + 1) / (double) substeps);
             observer.after(Stage.KINEMATICS);
             long c0 = System.nanoTime();
-            contacts.collide(particles, spheres, planes, solids, self, h);
+            contacts.collide(particles, spheres, planes, solids, self, h, settings.threads() > 1 && sweepListener == NO_LISTENER ? parallelFor(settings.threads()) : null);
             collideNanos += System.nanoTime() - c0;
             observer.after(Stage.COLLIDE);
             for (int b = 0, nb = body.size(); b < nb; b++) body.get(b).beginSubstep(ctx);
