@@ -180,6 +180,9 @@ public abstract class ConstraintBlock {
         count--;
     }
 
+    /** Whether a sweep may take this block in XPBD with one compliance for all (no per-constraint values). */
+    final boolean uniformXpbd(SolverContext ctx) { return ctx.mode == ConstraintMode.XPBD && complianceOf == null; }
+
     /** Once per substep before the sweeps: λ = 0, and k' refreshed if n, k or the correction changed. */
     final void beginSubstep(SolverContext ctx) {
         Arrays.fill(lambda, 0, count, 0);

@@ -80,6 +80,16 @@ final class ContactSet {
         return n;
     }
 
+    /** Marks the particles of every candidate touching its collider now (both particles of a touching pair). */
+    void markTouching(Particles p, boolean[] held) {
+        for (int k = 0; k < count; k++) {
+            if (with[k].clearance(p, entry[k]) >= TOUCHING) continue;
+            held[particle[k]] = true;
+            int other = with[k].partner(entry[k]);
+            if (other >= 0) held[other] = true;
+        }
+    }
+
     /** How near (m) a particle may be to its collider's surface plus margin and count as touching it. */
     static final double TOUCHING = 1e-6;
 

@@ -47,6 +47,8 @@ public final class Simulation {
     private final List<ExternalForce> forces = new ArrayList<>();
     private final SolverContext ctx = new SolverContext();
     private final StepSnapshot snapshot;
+    /** Where the last substep's prediction put each particle (y), for {@link StepBalance}. */
+    private final double[] prediction;
     /** The solve order (cloth constraints, then attachments), rebuilt only when either set changes. */
     private SweepOrder order = SweepOrder.asBuilt(List.of());
     /** The cloth constraints' colouring, built on first use after they change (not when grabbing). */
@@ -71,6 +73,7 @@ public final class Simulation {
         this.particles = particles;
         this.settings = settings;
         this.snapshot = new StepSnapshot(particles.count());
+        this.prediction = new double[3 * particles.count()];
         attachments.owner = this;
     }
 
@@ -331,6 +334,7 @@ public final class Simulation {
         for (int s = 0; s < substeps; s++) {
             final double t = time + h;
             predict(h);
+            System.arraycopy(particles.x, 0, prediction, 0, prediction.length);
             observer.after(Stage.PREDICT);
             moveKinematics(t, h);
             attachments.glide((s + 1) / (double) substeps);
@@ -521,6 +525,26 @@ public final class Simulation {
 
     /** Observes the solver after every sweep (convergence experiments); null for none. */
     public void setSweepListener(SweepListener listener) { sweepListener = listener == null ? NO_LISTENER : listener; }
+
+    /**
+     * How far the last step is from solving its own equation: the worst free particle's leftover force as a
+     * fraction of its weight ({@link StepBalance}); below {@link StepBalance#CONVERGED} the shape is the material's.
+     */
+    public double balance() {
+        if (balance == null) balance = new StepBalance(particles.count());
+        return balance.worst(this);
+    }
+
+    private StepBalance balance;
+
+    /** The last substep's prediction y (live; null before the first step). */
+    double[] lastPrediction() { return stepCount == 0 ? null : prediction; }
+
+    /** Marks the particles something without an energy holds now: touching a contact, or attached. */
+    void markHeld(boolean[] held) {
+        contacts.markTouching(particles, held);
+        for (int i = 0; i < attachments.count(); i++) held[attachments.particle(i, 0)] = true;
+    }
 
     /** Contacts found in the last substep (candidates within reach of a sphere, touching or not). */
     public int contactCount() { return contacts.count(); }

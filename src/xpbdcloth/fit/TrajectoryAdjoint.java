@@ -82,7 +82,8 @@ final class TrajectoryAdjoint {
         if (s.mode() != ConstraintMode.XPBD)
             throw new IllegalArgumentException("mode must be XPBD for a fit (PBD's stiffness depends on the sweep count), was " + s.mode());
         if (s.solver() != SolverType.GAUSS_SEIDEL || s.order() != ConstraintOrder.AS_BUILT)
-            throw new IllegalArgumentException("solver must be Gauss-Seidel in the order built on one thread for a dynamic fit, was " + s.solver() + ", " + s.order());
+            throw new IllegalArgumentException("solver must be gauss-seidel in the order built on one thread for a dynamic fit (the fit replays and differentiates those sweeps), was "
+                    + s.solver().label() + (s.order() == ConstraintOrder.AS_BUILT ? "" : " in the " + s.order().name().toLowerCase(java.util.Locale.ROOT) + " order"));
         if (sim.colliderCount() > 0 || sim.selfCollision() != null)
             throw new IllegalArgumentException("scene must have no colliders or self-collision for a dynamic fit (contacts are not differentiated), has "
                     + sim.colliderCount() + " colliders" + (sim.selfCollision() != null ? " and self-collision" : ""));

@@ -7,6 +7,7 @@ import processing.core.PGraphics;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.Metrics;
 import xpbdcloth.engine.Simulation;
+import xpbdcloth.engine.StepBalance;
 import xpbdcloth.fabric.Fabric;
 import xpbdcloth.scene.Preset;
 import xpbdcloth.scene.Scene;
@@ -56,6 +57,21 @@ final class Hud {
 
     private String lastMessage;
 
+    /**
+     * The worst particle's force imbalance in the step's own equation as a fraction of its weight
+     * ({@link StepBalance}): under {@link StepBalance#CONVERGED} the shape is the material's, over it the solver's.
+     */
+    static String balance(Simulation sim) {
+        double worst = sim.balance();
+        return worst < StepBalance.CONVERGED ? fmt("converged: worst particle off balance by %.2g of its weight", worst)
+                : fmt("NOT CONVERGED: worst particle off balance by %.2g × its weight (the shape is the solver's, not the material's)", worst);
+    }
+
+    /** Whether the simulation keeps up with the clock: a step's cost against the time it simulates. */
+    static String realTime(double stepMs, double dtMs, boolean slowMotion) {
+        return stepMs <= dtMs && !slowMotion ? "real time" : fmt("%.1f× slower than real time%s", stepMs / dtMs, slowMotion ? ", SLOW MOTION" : "");
+    }
+
     private static double kPrime(SketchState s, double k) { return s.mullerCorrection() ? 1 - Math.pow(1 - k, 1.0 / s.iterations()) : k; }
 
     private String[] format(SketchState s, double simMs, double renderMs, double bytesPerFrame, double fps, boolean slowMotion, boolean recording) {
@@ -71,7 +87,7 @@ final class Hud {
         String[] lines = {
                 s.preset().name + "  —  " + (s.sideBySide() ? "side by side: PBD | XPBD" : s.mode().toString()) + (s.paused ? "   [paused]" : ""),
                 fmt("iterations %d   substeps %d   dt 1/%.0f s (%.1f ms)", s.iterations(), s.substeps(), 1 / s.dt(), 1000 * s.dt()),
-                fmt("solver %s   residual ‖C + α̃λ‖ %.2e%s", s.solverType().name().toLowerCase(Locale.ROOT).replace('_', '-'), sim.residual(),
+                fmt("solver %s   %s%s", s.solverType().label(), balance(sim),
                         sim.lastPcgIterations() > 0 ? fmt("   CG iterations %d", sim.lastPcgIterations()) : ""),
                 km == null ? fmt("fabric %s%s%s   (F: next fabric)", fabric == null ? "(none)" : fabric.name, fabric == null || fabric.description.isEmpty() ? "" : " — " + fabric.description,
                         tethered ? ", tethered" : "") : fmt("family %s", famName),
@@ -82,8 +98,8 @@ final class Hud {
                         Double.isNaN(fabric.arealDensity) ? "" : fmt("   %.0f g/m²", 1000 * fabric.arealDensity)))
                         : fmt("  XPBD α %.2e m/N  →  1/α %s", km[1], km[1] == 0 ? "infinite (hard)" : fmt("%.2e N/m", 1 / km[1])),
                 recording ? "recording: 60 frames per simulated second (wall-clock timings not drawn)"
-                        : fmt("sim %.2f ms/step   render %.2f ms   %.0f fps   %.1f kB allocated/frame%s", simMs, renderMs, fps, bytesPerFrame / 1024,
-                        slowMotion ? "   SLOW MOTION" : ""),
+                        : fmt("step %.1f ms for %.0f ms of motion (%s)   render %.1f ms   %.0f fps   %.1f kB allocated/frame", simMs, 1000 * s.dt(),
+                        realTime(simMs, 1000 * s.dt(), slowMotion), renderMs, fps, bytesPerFrame / 1024),
                 fmt("particles %d   constraints %d   contacts %d touching of %d%s", sim.particles().count() * running.size(), constraints,
                         sim.touchingContacts(), sim.contactCount(), recording ? "" : fmt("   contacts %.2f ms, constraints %.2f ms", sim.contactMs(), sim.constraintSolveMs())),
                 (s.sideBySide() ? "strain: under each cloth" : fmt("strain mean %.2f %%  max %.2f %%",

@@ -26,14 +26,14 @@ public final class Main implements Callable<Integer> {
         @Option(names = "--size", description = "window or frame size WxH in pixels", defaultValue = "1280x800")
         String size;
 
-        @Option(names = "--threads", description = "solver threads (coloured parallel solve; same result for any count)", defaultValue = "1")
-        int threads;
+        @Option(names = "--threads", description = "solver threads (coloured parallel solve; same result for any count; default: 2, or 1 on a one-core machine)")
+        Integer threads;
 
         /** Validates the options (a bad scene, size or thread count fails here, with its message) and opens the sketch. */
         void open(ClothApp.Recording recording) {
             PresetLoader.byNameOrPath(scene);
             int[] wh = parseSize(size);
-            xpbdcloth.sketch.SketchState.setThreads(threads);
+            if (threads != null) xpbdcloth.sketch.SketchState.setThreads(threads);
             Launcher.open(scene, sideBySide, recording, wh[0], wh[1]);
         }
     }
