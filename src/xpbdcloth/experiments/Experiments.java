@@ -30,6 +30,7 @@ public final class Experiments implements Callable<Integer> {
         e.add(new DynamicFitRecovery());
         e.add(new TautCurtain());
         e.add(new MultigridOnTriangles());
+        e.add(new SolverChoice());
         return e;
     }
 
