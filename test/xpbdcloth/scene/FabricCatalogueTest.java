@@ -158,8 +158,8 @@ class FabricCatalogueTest {
     /** README's table of fabrics is the catalogue's, row for row. */
     @Test
     void readmeTableIsTheCatalogue() throws java.io.IOException {
-        String readme = java.nio.file.Files.readString(java.nio.file.Path.of("README.md"));
-        for (Fabric f : FabricCatalogue.all()) assertTrue(readme.contains(row(f)), "README lists " + row(f));
+        String readme = java.nio.file.Files.readString(java.nio.file.Path.of("docs/fabric.md"));
+        for (Fabric f : FabricCatalogue.all()) assertTrue(readme.contains(row(f)), "docs/fabric.md lists " + row(f));
     }
 
     static String row(Fabric f) {
