@@ -89,8 +89,13 @@ public final class Aerodynamics implements ExternalForce {
         double px = nx - along / speed * rx / speed, py = ny - along / speed * ry / speed, pz = nz - along / speed * rz / speed;
         double pl = Math.sqrt(px * px + py * py + pz * pz); // sin θ
         if (pl > 1e-12 && liftCoefficient > 0) {
-            double l = perCorner * liftCoefficient * speed * along; // ½ρA/3 · C_L · |r|² cos θ, then · sin θ · p̂ = · p
+            double kl = perCorner * liftCoefficient * speed;
+            double l = kl * along; // ½ρA/3 · C_L · |r|² cos θ, then · sin θ · p̂ = · p
             fx += l * px; fy += l * py; fz += l * pz;
+            // Lift is bounded as drag is: its rate joins the decay, so the velocity it adds in a step is at
+            // most |along| sin θ ≤ |r|. The flow cannot push a plate faster than it moves past it; applied
+            // explicitly, lift flung a stretched cloth in a strong flow ever faster.
+            decay.addRate(i, kl);
         }
         decay.addForce(i3, fx, fy, fz);
     }

@@ -90,6 +90,20 @@ public final class SelfCollision extends Collider implements Team.Job {
     /** Pairs listed at the last build (each is a candidate until the next). */
     public int pairCount() { return pairs; }
 
+    /**
+     * Marks both particles of every listed pair closer than {@code slack} thicknesses now: held by a contact
+     * whose force no energy of the step accounts for (a penalty pair presses slightly inside t).
+     */
+    void markTouching(Particles p, boolean[] held, double slack) {
+        final double[] x = p.x;
+        final double reach = slack * thickness;
+        for (int k = 0; k < pairs; k++) {
+            int a = 3 * pairI[k], b = 3 * pairJ[k];
+            double dx = x[a] - x[b], dy = x[a + 1] - x[b + 1], dz = x[a + 2] - x[b + 2];
+            if (dx * dx + dy * dy + dz * dz < reach * reach) held[pairI[k]] = held[pairJ[k]] = true;
+        }
+    }
+
     /** Hash rebuilds since this self-collision was made: the list is kept while it stays valid. */
     public long builds() { return builds; }
 

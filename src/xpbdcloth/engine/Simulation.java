@@ -309,12 +309,19 @@ public final class Simulation {
     /**
      * One step of dt seconds, split into the settings' substeps. If it leaves any position or velocity
      * non-finite, the state from before the step is restored and a {@link SimulationDivergedException}
-     * names the stage and constraint family that produced the first non-finite number.
+     * names the stage and constraint family that produced the first non-finite number; if anything inside
+     * the step throws, the state is restored too and the exception carries the cause.
      */
     public void step(double dt) {
         Check.positive("dt", dt);
         snapshot.save(particles, spheres, time, stepCount);
-        run(dt, StepObserver.NONE, solveStage());
+        try {
+            run(dt, StepObserver.NONE, solveStage());
+        } catch (RuntimeException failed) {
+            // Whatever a stage throws, half a step is not a state: put the one before it back.
+            restoreSnapshot();
+            throw new SimulationDivergedException(stepCount + 1, failed);
+        }
         if (!Metrics.allFinite(particles)) throw diverged(dt);
     }
 
@@ -540,9 +547,10 @@ public final class Simulation {
     /** The last substep's prediction y (live; null before the first step). */
     double[] lastPrediction() { return stepCount == 0 ? null : prediction; }
 
-    /** Marks the particles something without an energy holds now: touching a contact, or attached. */
+    /** Marks the particles something without an energy holds now: touching a contact or another layer, or attached. */
     void markHeld(boolean[] held) {
         contacts.markTouching(particles, held);
+        if (self != null) self.markTouching(particles, held, 1.01);
         for (int i = 0; i < attachments.count(); i++) held[attachments.particle(i, 0)] = true;
     }
 
