@@ -112,6 +112,29 @@ public final class MembraneBlock extends ConstraintBlock {
         return eps;
     }
 
+    /**
+     * Triangle t's largest principal stretch less one: √(1 + 2E₁) − 1 with E₁ the larger eigenvalue of the
+     * Green strain tensor [[E_uu, γ/2], [γ/2, E_vv]]. It is the engineering strain along the direction the
+     * triangle stretches most, the number a spring's |x|/L − 1 reads, so springs and fabric compare.
+     * Allocation-free (the HUD calls it every frame).
+     */
+    public double principalStrain(int t, Particles p) {
+        final double[] x = p.x;
+        final int i = 3 * t, a = 3 * particles[3 * i], b = 3 * particles[3 * i + 1], c = 3 * particles[3 * i + 2];
+        final double P = restInverse[4 * i], Q = restInverse[4 * i + 1], R = restInverse[4 * i + 2], S = restInverse[4 * i + 3];
+        double uu = 0, vv = 0, uv = 0;
+        for (int k = 0; k < 3; k++) {
+            double e1 = x[b + k] - x[a + k], e2 = x[c + k] - x[a + k];
+            double fu = e1 * P + e2 * R, fv = e1 * Q + e2 * S;
+            uu += fu * fu;
+            vv += fv * fv;
+            uv += fu * fv;
+        }
+        double euu = 0.5 * (uu - 1), evv = 0.5 * (vv - 1), half = 0.5 * (euu - evv);
+        double largest = 0.5 * (euu + evv) + Math.sqrt(half * half + 0.25 * uv * uv);
+        return Math.sqrt(Math.max(0, 1 + 2 * largest)) - 1;
+    }
+
     /** Rest area of triangle t, m². */
     public double area(int t) { return area[3 * t]; }
 

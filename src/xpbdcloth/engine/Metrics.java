@@ -76,6 +76,43 @@ public final class Metrics {
         return n == 0 ? 0 : sum / n;
     }
 
+    /**
+     * The cloth's largest strain, whatever it is made of: the structural springs' |x|/L − 1 where it has
+     * them, else its membrane triangles' largest principal stretch less one ({@link MembraneBlock#principalStrain}).
+     */
+    public static double maxClothStrain(Simulation sim) {
+        if (has(sim, ConstraintFamily.STRUCTURAL)) return maxStrain(sim, ConstraintFamily.STRUCTURAL);
+        double max = 0;
+        for (int k = 0; k < sim.blocks().size(); k++)
+            if (sim.blocks().get(k) instanceof MembraneBlock) {
+                MembraneBlock m = (MembraneBlock) sim.blocks().get(k);
+                for (int t = 0; t < m.triangleCount(); t++) max = Math.max(max, Math.abs(m.principalStrain(t, sim.particles())));
+            }
+        return max;
+    }
+
+    /** The mean of the same strain over the cloth's springs or membrane triangles (signed; 0 if it has neither). */
+    public static double meanClothStrain(Simulation sim) {
+        if (has(sim, ConstraintFamily.STRUCTURAL)) return meanStrain(sim, ConstraintFamily.STRUCTURAL);
+        double sum = 0;
+        int n = 0;
+        for (int k = 0; k < sim.blocks().size(); k++)
+            if (sim.blocks().get(k) instanceof MembraneBlock) {
+                MembraneBlock m = (MembraneBlock) sim.blocks().get(k);
+                for (int t = 0; t < m.triangleCount(); t++, n++) sum += m.principalStrain(t, sim.particles());
+            }
+        return n == 0 ? 0 : sum / n;
+    }
+
+    /** Whether the simulation has distance constraints of this family. */
+    static boolean has(Simulation sim, ConstraintFamily family) {
+        for (int k = 0; k < sim.blocks().size(); k++) {
+            ConstraintBlock b = sim.blocks().get(k);
+            if (b instanceof DistanceBlock && b.family() == family && b.count() > 0) return true;
+        }
+        return false;
+    }
+
     /** The largest |λ|/h² over a family's constraints in the last substep: the force its most loaded one carries (N). */
     public static double maxForce(Simulation sim, ConstraintFamily family) {
         double h = sim.settings().timestep() / sim.settings().substeps(), max = 0;

@@ -13,7 +13,7 @@ import picocli.CommandLine.Option;
  * experiment into the output folder, then prints a summary table. Deterministic: no randomness, no
  * threads, no wall-clock inputs.
  */
-@Command(name = "experiments", mixinStandardHelpOptions = true,
+@Command(name = "experiments", mixinStandardHelpOptions = true, showDefaultValues = true,
         description = "Reproduces the source texts' claims as CSV and PNG plots.")
 public final class Experiments implements Callable<Integer> {
     static List<Experiment> all() {

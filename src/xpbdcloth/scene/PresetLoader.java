@@ -76,9 +76,17 @@ public final class PresetLoader {
         ClothMesh load(String relativeName, double weld);
     }
 
-    /** Mesh files relative to a folder. */
+    /**
+     * Mesh files relative to a folder; a plain name found nowhere there but shipped beside the built-in
+     * presets is taken from the jar, so a copied built-in preset (cp data/flag.json .) still runs.
+     */
     private static MeshFiles besides(Path folder) {
-        return (name, weld) -> ObjReader.read(folder.resolve(name), weld);
+        return (name, weld) -> {
+            Path file = folder.resolve(name);
+            boolean plainName = !name.contains("/") && !name.contains("\\");
+            if (!Files.exists(file) && plainName && PresetLoader.class.getResource("/presets/" + name) != null) return builtInMesh(name, weld);
+            return ObjReader.read(file, weld);
+        };
     }
 
     /** The largest preset file read, bytes: the biggest sensible preset is a few kB. */
@@ -90,6 +98,12 @@ public final class PresetLoader {
      */
     public static Preset load(Path path) {
         String file = path.toString();
+        return parse(file, readGuarded(path), besides(path.toAbsolutePath().getParent()));
+    }
+
+    /** A preset-sized text file's text: a regular file, at most {@link #MAX_FILE_BYTES}, UTF-8; else the problem, named. */
+    static String readGuarded(Path path) {
+        String file = path.toString();
         if (Files.isDirectory(path)) throw new PresetException(file, "(file)", "is a directory, not a preset file");
         if (!Files.exists(path)) throw new PresetException(file, "(file)", "does not exist");
         if (!Files.isRegularFile(path)) throw new PresetException(file, "(file)", "is not a regular file (a device or a pipe?), not a preset file");
@@ -97,11 +111,23 @@ public final class PresetLoader {
             long size = Files.size(path);
             if (size > MAX_FILE_BYTES)
                 throw new PresetException(file, "(file)", "is " + size + " bytes; a preset is at most " + MAX_FILE_BYTES + " bytes (this is not a preset, or it lists far too much)");
-            Path folder = path.toAbsolutePath().getParent();
-            return parse(file, utf8(file, Files.readAllBytes(path)), besides(folder));
+            return utf8(file, Files.readAllBytes(path));
         } catch (IOException e) {
             throw new PresetException(file, "(file)", "cannot be read: " + e.getMessage());
         }
+    }
+
+    /**
+     * The fabrics of a catalogue file (one whose top level lists {@code "fabrics"}, as data/fabrics.json),
+     * validated, or null when the file is something else (a preset): so {@code check data/*.json} checks
+     * the catalogue as a catalogue. A built-in scene name is never a catalogue.
+     */
+    public static List<Fabric> catalogueOrNull(String nameOrPath) {
+        if (BUILT_IN.contains(nameOrPath)) return null;
+        Path path = Path.of(nameOrPath);
+        if (!Files.isRegularFile(path)) return null;
+        String text = readGuarded(path);
+        return readJson(nameOrPath, text).has("fabrics") ? parseCatalogue(nameOrPath, text) : null;
     }
 
     /** The bytes as UTF-8 text, or an error saying where they stop being UTF-8. */

@@ -228,6 +228,7 @@ public final class ClothApp {
         camera.eye(scratch);
         if (state.showGrid) renderer.drawGround(g, 0);
         long m0 = threadBean.getCurrentThreadAllocatedBytes();
+        renderer.floorShown = state.showGrid;
         renderer.drawScenes(g, state, scratch[0], scratch[1], scratch[2]);
         meshAllocated = 0.9 * meshAllocated + 0.1 * (threadBean.getCurrentThreadAllocatedBytes() - m0);
         long h0 = threadBean.getCurrentThreadAllocatedBytes();
@@ -259,10 +260,17 @@ public final class ClothApp {
         }
     }
 
+    /** Simulated seconds between two recorded frames: the steps each frame takes, times dt. */
+    double recordedFrameSeconds() {
+        return ObjExport.stepsPerFrame(state.dt()) * state.dt();
+    }
+
     private void writeMp4() {
         try {
-            int used = Mp4Video.write(recording, recorded);
-            System.out.printf("wrote %s (%d frames at %d fps, %d bytes)%n", recording.mp4, used, recording.fps, recording.mp4.length());
+            double frameSeconds = recordedFrameSeconds();
+            int used = Mp4Video.write(recording, recorded, frameSeconds);
+            System.out.printf("wrote %s (%d frames at %d fps, real time; %d bytes)%n", recording.mp4, used,
+                    Math.round(1 / (frameSeconds * (60 / recording.fps))), recording.mp4.length());
         } catch (java.io.IOException | RuntimeException e) {
             System.err.println("no MP4: " + e.getMessage() + " (the PNG frames are in " + recording.folder + ")");
         }
@@ -294,10 +302,12 @@ public final class ClothApp {
     private volatile boolean choosing;
 
     public void keyEvent(KeyEvent e) {
+        // Keep Esc from closing the sketch by accident, also while a file chooser is open (its Esc closes
+        // the chooser, and Processing would see it too).
+        if (e.getAction() == KeyEvent.PRESS && e.getKey() == PConstants.ESC) app.key = 0;
         if (choosing || e.getAction() != KeyEvent.PRESS || e.getKey() == PConstants.CODED) return;
         KeyBinding b = KeyBindings.forKey(e.getKey());
         if (b != null) b.press(state);
-        if (e.getKey() == PConstants.ESC) app.key = 0; // keep Esc from closing the sketch by accident
     }
 
     public void mouseEvent(MouseEvent e) {

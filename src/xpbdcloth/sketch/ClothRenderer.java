@@ -92,7 +92,7 @@ public final class ClothRenderer {
             else drawMesh(g, sc.cloth(), eyeX - ox, eyeY, eyeZ);
             drawParticles(g, sc.cloth().particles(), state.showParticles);
             if (state.showSpheres) for (Sphere s : sc.simulation().spheres()) drawSphere(g, s);
-            if (state.showSpheres) for (Plane pl : sc.simulation().planes()) drawPlane(g, pl, sc.cloth());
+            if (state.showSpheres) for (Plane pl : sc.simulation().planes()) if (!(floorShown && isFloor(pl))) drawPlane(g, pl, sc.cloth());
             if (state.showSpheres) for (RigidCollider s : sc.simulation().solids()) drawSolid(g, s);
             if (i == 0 && state.fit() != null) drawGhost(g, state.fit());
             g.popMatrix();
@@ -261,6 +261,18 @@ public final class ClothRenderer {
         g.stroke(250, 220, 80);
         ring(g, r, 1);
         g.popMatrix();
+    }
+
+    /**
+     * Whether the caller has drawn the floor (y = 0, with its grid and shadows): a plane collider that is
+     * that floor is then not drawn again, since two coplanar surfaces z-fight into stripes. The library,
+     * which draws no floor of its own, leaves it false.
+     */
+    public boolean floorShown;
+
+    /** A plane collider lying in y = 0 facing up: the floor the sketch draws. */
+    static boolean isFloor(Plane p) {
+        return p.normalY() > 0.999 && Math.abs(p.distance(0, 0, 0)) < 1e-6;
     }
 
     /**

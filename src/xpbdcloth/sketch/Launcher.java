@@ -47,6 +47,8 @@ public final class Launcher extends PApplet {
     public static void open(String scene, boolean sideBySide, ClothApp.Recording recording, int width, int height) {
         opened = true;
         QuietJogl.install();
-        PApplet.runSketch(new String[] {"xpbd-cloth"}, new Launcher(scene, sideBySide, recording, width, height));
+        // The sketch's folder is where the user runs it from: `O` writes there, as the README says, not
+        // into the install folder Processing would otherwise take from the class path.
+        PApplet.runSketch(new String[] {PApplet.ARGS_SKETCH_FOLDER + "=" + System.getProperty("user.dir"), "xpbd-cloth"}, new Launcher(scene, sideBySide, recording, width, height));
     }
 }

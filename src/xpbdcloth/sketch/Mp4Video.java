@@ -10,8 +10,9 @@ import org.jcodec.api.awt.AWTSequenceEncoder;
 
 /**
  * Turns a recording's PNG frames into an H.264 MP4 (JCodec, pure Java: no ffmpeg needed) at the sketch's
- * resolution, for sharing where a GIF's 256 colours and 33 Hz fall short. The frames are 60 Hz of
- * simulated time; at 30 fps every second frame is kept, so the video plays in real time either way.
+ * resolution, for sharing where a GIF's 256 colours and 33 Hz fall short. Every frame is kept ("60"), or
+ * every second one ("30"), and the video's rate is set from the frames' simulated time, so it plays in
+ * real time either way.
  * H.264 works on 2 × 2 blocks of colour, so an odd width or height loses its last pixel column or row.
  *
  * <p>JCodec converts RGB to full-range YUV (0–255) but writes no flag saying so, and players, JCodec's own
@@ -30,10 +31,15 @@ final class Mp4Video {
         throw new IllegalArgumentException("fps must be 30 or 60 (the recording's frames are 60 Hz), was " + fps);
     }
 
-    /** Writes the recording's first {@code count} frames to its MP4 file; returns the frames used. */
-    static int write(ClothApp.Recording recording, int count) throws IOException {
+    /**
+     * Writes the recording's first {@code count} frames to its MP4 file; returns the frames used. A frame is
+     * {@code frameSeconds} of simulated time (1/60 s where dt divides it, one step where dt is longer), so
+     * the video's rate is 1/frameSeconds over the stride and plays in real time: 50 and 25 fps for a 20 ms step.
+     */
+    static int write(ClothApp.Recording recording, int count, double frameSeconds) throws IOException {
         int stride = 60 / recording.fps;
-        AWTSequenceEncoder encoder = AWTSequenceEncoder.createSequenceEncoder(recording.mp4, recording.fps);
+        int rate = (int) Math.round(1 / (frameSeconds * stride));
+        AWTSequenceEncoder encoder = AWTSequenceEncoder.createSequenceEncoder(recording.mp4, Math.max(1, rate));
         int used = 0;
         for (int i = 1; i <= count; i += stride) {
             File png = recording.frame(i);

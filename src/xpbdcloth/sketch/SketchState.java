@@ -8,7 +8,6 @@ import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.ConstraintMode;
 import xpbdcloth.engine.Simulation;
 import xpbdcloth.engine.SolverSettings;
-import xpbdcloth.engine.SimulationDivergedException;
 import xpbdcloth.engine.SolverType;
 import xpbdcloth.fabric.Fabric;
 import xpbdcloth.scene.FabricCatalogue;
@@ -197,7 +196,10 @@ public final class SketchState {
             return;
         }
         applyAll();
-        say("solver " + shared.solver().label() + (shared.solver() == SolverType.GAUSS_SEIDEL ? "" : ": each iteration is one global Newton step; contacts stay Gauss-Seidel"));
+        SolverType now = shared.solver();
+        say("solver " + now.label() + (now == SolverType.GAUSS_SEIDEL ? ""
+                : now == SolverType.VERTEX_BLOCK_DESCENT ? ": each iteration is one Newton step per particle; the rest is the material's at any sweep count"
+                : ": each iteration is one global Newton step; contacts stay Gauss-Seidel"));
     }
 
     public void changeIterations(int delta) {
@@ -432,8 +434,9 @@ public final class SketchState {
         if (pendingSteps > 0) pendingSteps--;
         try {
             for (Scene s : running()) s.simulation().step();
-        } catch (SimulationDivergedException e) {
-            // The engine has already put the scene back as it was before the step; stop there and say why.
+        } catch (RuntimeException e) {
+            // The engine has already put the scene back as it was before the step (a SimulationDivergedException,
+            // whatever the step threw); anything else still must not close the sketch: stop there and say why.
             paused = true;
             pendingSteps = 0;
             error("paused: " + e.getMessage());
@@ -459,7 +462,7 @@ public final class SketchState {
         if (tearingSaid || ++stepsSinceTearCheck < 30) return;
         stepsSinceTearCheck = 0;
         for (Scene s : running()) {
-            double strain = xpbdcloth.engine.Metrics.maxStrain(s.simulation(), ConstraintFamily.STRUCTURAL);
+            double strain = xpbdcloth.engine.Metrics.maxClothStrain(s.simulation());
             if (strain > TEARING_STRAIN) {
                 tearingSaid = true;
                 int particles = s.cloth().particles().count();

@@ -25,9 +25,10 @@ import xpbdcloth.scene.PresetLoader;
 import xpbdcloth.scene.Scene;
 
 /** `xpbd-cloth fit`: recovers compliances (and damping) from an observed rest shape or motion, or makes such an observation. */
-@Command(name = "fit", mixinStandardHelpOptions = true,
-        description = {"Fits the compliances of a scene's families to an observed rest shape (an OBJ in the scene's vertex order):"
-                + " the equilibrium is differentiated through the implicit function theorem and Gauss-Newton steps in ln(alpha) follow.",
+@Command(name = "fit", mixinStandardHelpOptions = true, showDefaultValues = true,
+        description = {"Fits a scene's compliances (and damping) to an observed rest shape or motion.",
+                "Given a rest shape (an OBJ in the scene's vertex order), the equilibrium is differentiated through the implicit"
+                + " function theorem and Gauss-Newton steps in ln(alpha) follow.",
                 "Given a folder of OBJ frames instead (a trajectory, one per step of the scene's dt, the first after one step) it fits"
                 + " the compliances and the damping to the motion: every substep is differentiated in reverse and BFGS steps follow.",
                 "Writes <out>/<scene>-fitted.json (a preset), iterations.csv and fit.png. Exit 0 converged, 1 not converged (files still written), 2 bad input.",

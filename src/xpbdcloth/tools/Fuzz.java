@@ -35,7 +35,7 @@ import xpbdcloth.mesh.ClothMesh;
  * Every case must end with finite positions, or, for the illegal one, with an IllegalArgumentException
  * that names the parameter and its value. A failing case prints its seed; {@code --seed} replays it.
  */
-@Command(name = "fuzz", mixinStandardHelpOptions = true, description = "Random simulations that must stay finite.")
+@Command(name = "fuzz", mixinStandardHelpOptions = true, showDefaultValues = true, description = "Random simulations that must stay finite.")
 public final class Fuzz implements Callable<Integer> {
 
     /** One case's outcome with the solver drawn from its seed: null if it passed, else why it failed. */

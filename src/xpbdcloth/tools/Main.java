@@ -10,7 +10,7 @@ import xpbdcloth.sketch.ClothApp;
 import xpbdcloth.sketch.Launcher;
 
 /** The command line: opens the sketch, records frames, runs the benchmark. */
-@Command(name = "xpbd-cloth", mixinStandardHelpOptions = true, version = "xpbd-cloth 0.1.0",
+@Command(name = "xpbd-cloth", mixinStandardHelpOptions = true, showDefaultValues = true, version = "xpbd-cloth 0.1.0",
         description = "Real-time PBD/XPBD cloth. With no command, opens the sketch.",
         subcommands = {Main.Record.class, Main.CheckCommand.class, Main.BenchCommand.class, FitCommand.class, xpbdcloth.experiments.Experiments.class})
 public final class Main implements Callable<Integer> {
@@ -109,7 +109,7 @@ public final class Main implements Callable<Integer> {
         return true;
     }
 
-    @Command(name = "record", mixinStandardHelpOptions = true,
+    @Command(name = "record", mixinStandardHelpOptions = true, showDefaultValues = true,
             description = "Renders a scene through the real P3D sketch at a fixed timestep and writes PNG frames (and optionally a GIF and an MP4).")
     static final class Record implements Callable<Integer> {
         @CommandLine.Mixin
@@ -127,8 +127,9 @@ public final class Main implements Callable<Integer> {
         @Option(names = "--mp4", description = "also write the frames as an H.264 MP4 video at the window's size to this file")
         File mp4;
 
-        @Option(names = "--fps", description = "frames per second of the MP4: 60 (every frame) or 30 (every second frame); both play in real time", defaultValue = "60")
-        int fps;
+        @Option(names = "--fps", description = "frames per second: of the MP4, 60 (every frame, the default) or 30 (every second frame), both real time; "
+                + "of an --obj sequence, in simulated time, any rate whose frame is a whole number of the scene's steps (default: one frame per 1/60 s, or per step when dt is longer)")
+        Integer fps;
 
         @Option(names = "--obj", description = "instead of PNG frames, write the cloth as one OBJ per frame (frame-0001.obj, ...) into this folder; headless, no display needed")
         File obj;
@@ -144,7 +145,7 @@ public final class Main implements Callable<Integer> {
             File folder = (out != null ? out : new File("build/frames/" + name + (sketch.sideBySide ? "-side-by-side" : ""))).getAbsoluteFile();
             if (gif != null) gif = gif.getAbsoluteFile();
             if (mp4 != null) mp4 = mp4.getAbsoluteFile();
-            ClothApp.Recording recording = new ClothApp.Recording(folder, frames, gif, mp4, fps); // checks fps first
+            ClothApp.Recording recording = new ClothApp.Recording(folder, frames, gif, mp4, fps == null ? 60 : fps); // checks fps first
             System.out.println("recording " + frames + " frames of " + sketch.scene + " into " + folder);
             sketch.open(recording);
             return 0;
@@ -155,18 +156,23 @@ public final class Main implements Callable<Integer> {
             if (gif != null) throw new IllegalArgumentException("--obj writes meshes, not images; drop --gif");
             if (mp4 != null) throw new IllegalArgumentException("--obj writes meshes, not images; drop --mp4");
             xpbdcloth.scene.Preset preset = PresetLoader.byNameOrPath(sketch.scene);
+            double dt = preset.solver.dt;
+            int steps = fps == null ? xpbdcloth.scene.ObjExport.stepsPerFrame(dt) : xpbdcloth.scene.ObjExport.stepsPerFrame(dt, fps);
+            double rate = 1 / (steps * dt);
+            System.out.printf(java.util.Locale.ROOT, "recording %d OBJ frames of %s into %s: %.6g frames per second of simulated time (a frame every %d step%s of %.4g ms)%n",
+                    frames, sketch.scene, obj, rate, steps, steps == 1 ? "" : "s", 1000 * dt);
             long t0 = System.nanoTime();
-            int n = xpbdcloth.scene.ObjExport.recordSequence(preset, frames, obj.toPath());
-            System.out.printf(java.util.Locale.ROOT, "wrote %d OBJ frames of %s (%d vertices each, 60 frames per second of simulated time) into %s in %.1f s%n",
-                    n, sketch.scene, preset.cloth.isMesh() ? preset.cloth.mesh.vertexCount() : preset.cloth.columns * preset.cloth.rows, obj, (System.nanoTime() - t0) / 1e9);
+            int n = xpbdcloth.scene.ObjExport.recordSequence(preset, frames, obj.toPath(), steps);
+            System.out.printf(java.util.Locale.ROOT, "wrote %d OBJ frames (%d vertices each; import at %.6g fps to play in real time) in %.1f s%n",
+                    n, preset.cloth.isMesh() ? preset.cloth.mesh.vertexCount() : preset.cloth.columns * preset.cloth.rows, rate, (System.nanoTime() - t0) / 1e9);
             return 0;
         }
     }
 
-    @Command(name = "check", mixinStandardHelpOptions = true,
-            description = "Loads presets and builds their scenes without a window, and reports each one's problems (exit code 2 if any).")
+    @Command(name = "check", mixinStandardHelpOptions = true, showDefaultValues = true,
+            description = "Loads presets (and fabric catalogues) without a window, builds their scenes, and reports each one's problems on standard error (exit code 2 if any).")
     static final class CheckCommand implements Callable<Integer> {
-        @CommandLine.Parameters(arity = "1..*", paramLabel = "PRESET", description = "built-in scene names or preset files")
+        @CommandLine.Parameters(arity = "1..*", paramLabel = "PRESET", description = "built-in scene names, preset files or fabric catalogue files")
         java.util.List<String> presets;
 
         @CommandLine.Spec
@@ -174,22 +180,28 @@ public final class Main implements Callable<Integer> {
 
         @Override public Integer call() {
             int bad = 0;
+            java.io.PrintWriter out = spec.commandLine().getOut(), err = spec.commandLine().getErr();
             for (String p : presets) {
                 try {
+                    java.util.List<xpbdcloth.fabric.Fabric> fabrics = PresetLoader.catalogueOrNull(p);
+                    if (fabrics != null) {
+                        out.printf("%s: ok (a fabric catalogue: %d fabrics)%n", p, fabrics.size());
+                        continue;
+                    }
                     xpbdcloth.scene.Scene scene = xpbdcloth.scene.Scene.of(PresetLoader.byNameOrPath(p));
-                    spec.commandLine().getOut().printf("%s: ok (%d particles, %d constraints)%n", p,
-                            scene.cloth().particles().count(), scene.simulation().constraintCount());
+                    out.printf("%s: ok (%d particles, %d constraints)%n", p, scene.cloth().particles().count(), scene.simulation().constraintCount());
                 } catch (IllegalArgumentException e) {
-                    spec.commandLine().getOut().println(e.getMessage());
+                    err.println(e.getMessage());
                     bad++;
                 }
             }
-            spec.commandLine().getOut().flush();
+            out.flush();
+            err.flush();
             return bad == 0 ? 0 : 2;
         }
     }
 
-    @Command(name = "bench", mixinStandardHelpOptions = true, description = "The engine benchmark (CSV on stdout).")
+    @Command(name = "bench", mixinStandardHelpOptions = true, showDefaultValues = true, description = "The engine benchmark (CSV on stdout).")
     static final class BenchCommand implements Callable<Integer> {
         @Option(names = "--full", description = "also the peer workloads, all families, N = 256 and the parallel solve")
         boolean full;

@@ -16,7 +16,7 @@ import xpbdcloth.scene.Scene;
  * {@code gradle soak} runs corners and spinning-sphere for 100 000 steps each, prints one summary line
  * per scene and exits non-zero on any violation; the test suite runs a short version.
  */
-@Command(name = "soak", mixinStandardHelpOptions = true, description = "Long runs that must stay finite and bounded.")
+@Command(name = "soak", mixinStandardHelpOptions = true, showDefaultValues = true, description = "Long runs that must stay finite and bounded.")
 public final class Soak implements Callable<Integer> {
     /** Largest structural strain a scene may reach during a soak (the stated bound). */
     public static final double MAX_STRAIN = 0.5;

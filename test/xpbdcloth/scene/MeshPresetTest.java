@@ -34,6 +34,16 @@ class MeshPresetTest {
         return PresetLoader.load(p);
     }
 
+    /** A built-in preset copied elsewhere (cp data/flag.json .) finds its shipped mesh in the jar; a missing mesh of another name is still an error. */
+    @Test
+    void aCopiedBuiltInPresetFindsItsMesh(@TempDir Path dir) throws IOException {
+        Path copy = Files.writeString(dir.resolve("flag.json"), Files.readString(Path.of("data/flag.json")));
+        Preset p = PresetLoader.load(copy);
+        assertEquals(622, Scene.of(p).cloth().particles().count());
+        Path other = Files.writeString(dir.resolve("other.json"), Files.readString(Path.of("data/flag.json")).replace("flag-with-hole.obj", "no-such-mesh.obj"));
+        assertThrows(IllegalArgumentException.class, () -> PresetLoader.load(other));
+    }
+
     @Test
     void meshIsPlacedAndPinnedByIndexGroupAndBox(@TempDir Path dir) throws IOException {
         Preset p = load(dir, preset("{ \"file\": \"two.obj\", \"scale\": 2, \"rotation\": [0, 90, 0], \"translation\": [0, 3, 0] }",

@@ -34,6 +34,25 @@ class ObjExportTest {
         assertEquals(31 * 31, first.faceCount(), "the grid's quads, not its triangles");
     }
 
+    /** Each file's header time is its frame number over the stated rate: played at that rate, the motion is real time. */
+    @Test
+    void headerTimesMatchTheStatedRate(@TempDir Path dir) throws IOException {
+        Preset preset = PresetLoader.builtIn("flag"); // dt = 20 ms: one step is 1/50 s, not a 60 Hz frame
+        assertEquals(50.0, ObjExport.naturalFps(preset.solver.dt), 1e-9);
+        for (double fps : new double[] {50, 25, 10}) {
+            int steps = ObjExport.stepsPerFrame(preset.solver.dt, fps);
+            Path folder = dir.resolve("fps" + (int) fps);
+            ObjExport.recordSequence(preset, 3, folder, steps);
+            for (int f = 1; f <= 3; f++) {
+                String header = Files.readString(ObjExport.frameFile(folder, f)).lines().filter(l -> l.contains("t = ")).findFirst().orElseThrow();
+                double t = Double.parseDouble(header.replaceAll(".*t = ([0-9.]+) s.*", "$1"));
+                assertEquals(f / fps, t, 1e-4, "frame " + f + " at " + fps + " fps: " + header);
+            }
+        }
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> ObjExport.stepsPerFrame(0.02, 60));
+        assertTrue(e.getMessage().startsWith("fps: 60") && e.getMessage().contains("50, 25"), e.getMessage());
+    }
+
     @Test
     void stepsPerFrameFollowTheSketchsRecorder() {
         assertEquals(2, ObjExport.stepsPerFrame(1 / 120.0));

@@ -36,9 +36,28 @@ class CommandLineTest {
         assertEquals(0, cli.execute("check", "hanging", "flag"));
         assertTrue(out.toString().contains("hanging: ok (1024 particles"), out.toString());
         assertTrue(out.toString().contains("flag: ok (622 particles"), out.toString());
+        StringWriter err = new StringWriter();
+        cli.setErr(new PrintWriter(err, true));
         out.getBuffer().setLength(0);
         assertEquals(2, cli.execute("check", "hanging", bad.toString()));
-        assertTrue(out.toString().contains(bad + ": (syntax): not valid JSON"), out.toString());
+        assertTrue(err.toString().contains(bad + ": (syntax): not valid JSON"), "problems go to standard error: " + err);
+        assertFalse(out.toString().contains("not valid JSON"), out.toString());
+        out.getBuffer().setLength(0);
+        assertEquals(0, cli.execute("check", "data/fabrics.json", "data/hanging.json"), "the shipped catalogue is recognised, not refused as a scene");
+        assertTrue(out.toString().contains("data/fabrics.json: ok (a fabric catalogue: 9 fabrics)"), out.toString());
+    }
+
+    /** --help shows each option's default, and the command list says fit takes a motion too. */
+    @Test
+    void helpShowsTheDefaults() {
+        StringWriter out = new StringWriter();
+        CommandLine cli = new CommandLine(new Main());
+        cli.setOut(new PrintWriter(out, true));
+        assertEquals(0, cli.execute("record", "--help"));
+        assertTrue(out.toString().contains("Default: 120") && out.toString().contains("Default: 1280x800") && out.toString().contains("Default: hanging"), out.toString());
+        out.getBuffer().setLength(0);
+        assertEquals(0, cli.execute("--help"));
+        assertTrue(out.toString().contains("rest") && out.toString().contains("motion"), out.toString());
     }
 
     @Test
