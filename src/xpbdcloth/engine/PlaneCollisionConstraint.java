@@ -19,7 +19,8 @@ final class PlaneCollisionConstraint {
     static double project(Particles p, int i, Plane s, double h) {
         final double[] x = p.x;
         final int k = 3 * i;
-        double C = s.distance(x[k], x[k + 1], x[k + 2]) - s.margin;
+        double startDepth = s.margin - s.distance(p.prev[k], p.prev[k + 1], p.prev[k + 2]);
+        double C = s.distance(x[k], x[k + 1], x[k + 2]) - s.margin + Collider.leftInside(startDepth, h);
         double w = p.w[i];
         if (C >= 0 || w == 0) return 0;
         double dLambda = Constraint.hardDeltaLambda(C, w);

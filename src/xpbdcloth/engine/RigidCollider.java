@@ -17,7 +17,7 @@ public abstract class RigidCollider extends Collider {
     final double[] rotation = new double[9], previous = new double[9];
     private final double[] spin = new double[9], centre = new double[3];
     /** Scratch of the contact's maths: a local point and a normal (contacts run on one thread). */
-    final double[] q = new double[3], n = new double[3];
+    final double[] q = new double[3], n = new double[3], scratchNormal = new double[3];
 
     RigidCollider(SpherePath path, double[] rotation, double margin, double staticFriction, double kineticFriction) {
         super(margin, staticFriction, kineticFriction);

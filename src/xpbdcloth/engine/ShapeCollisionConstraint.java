@@ -65,7 +65,11 @@ final class ShapeCollisionConstraint {
             s.distance(bx, by, bz, n); // inside at both ends: out by the nearest way, below
         }
         double nx = s.worldX(n), ny = s.worldY(n), nz = s.worldZ(n);
-        double normalCorrection = -fb;
+        // Out no faster than the depenetration speed from where it started inside (n is kept: the
+        // distance at the start is taken into a scratch normal).
+        double startDepth = -(s.distance(ax, ay, az, s.scratchNormal) - s.margin);
+        double normalCorrection = -fb - Collider.leftInside(startDepth, h);
+        if (normalCorrection <= 0) return;
         x[k] += normalCorrection * nx; x[k + 1] += normalCorrection * ny; x[k + 2] += normalCorrection * nz;
         // Surface velocity where the particle now touches: v + ω × (x − c).
         double rx = x[k] - s.cx, ry = x[k + 1] - s.cy, rz = x[k + 2] - s.cz;

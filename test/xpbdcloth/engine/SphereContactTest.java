@@ -59,6 +59,12 @@ class SphereContactTest {
         sim.add(new Sphere(SpherePath.fixed(0, 0, 0), R, 0.01, 0.5, 0.5));
         sim.step();
         assertTrue(Metrics.allFinite(p));
-        assertEquals(R + 0.01, p.y(0), 1e-12);
+        // Deep inside, it comes out no faster than the depenetration speed (0.2 m in a 20 ms step) …
+        assertEquals(Collider.MAX_DEPENETRATION_SPEED * 0.02, p.y(0), 1e-12);
+        sim.step();
+        sim.step();
+        // … and leaves with that speed, not faster: out of the ball (R + margin = 0.51 m) after three steps.
+        assertEquals(3 * Collider.MAX_DEPENETRATION_SPEED * 0.02, p.y(0), 1e-12);
+        assertTrue(p.y(0) > R + 0.01);
     }
 }
