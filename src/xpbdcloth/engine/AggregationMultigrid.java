@@ -28,7 +28,7 @@ import java.util.List;
  *
  * <p>On a triangle mesh of hard edges it is no better than a diagonal: the edges outnumber the in-plane
  * degrees of freedom, A equals α̃ on their self-stresses (Jᵀ Δλ = 0), a space about as large as the mesh,
- * which neither a smoother nor a coarse space reaches (README, experiment 12).
+ * which neither a smoother nor a coarse space reaches (docs/experiments.md, experiment 12).
  */
 final class AggregationMultigrid {
     static final int COARSEST = 64;

@@ -2,7 +2,7 @@ package xpbdcloth.engine;
 
 /** The kinds of constraint a cloth is built from; stiffness and compliance are set per family. */
 public enum ConstraintFamily {
-    /** Distance constraints along the grid's rows and columns. */
+    /** Distance constraints along the mesh's edges (a grid's rows and columns, a polyline's segments). */
     STRUCTURAL,
     /** Angle constraints between the row and column edges meeting at a vertex. */
     SHEAR,
@@ -14,7 +14,7 @@ public enum ConstraintFamily {
     DIHEDRAL,
     /** Long-range attachments to the nearest pin ({@link TetherBlock}). */
     TETHER,
-    /** Sphere contacts: always hard (k = 1, α = 0). */
+    /** Contacts with colliders and between the cloth's layers: always hard (k = 1, α = 0). */
     COLLISION,
     /** A particle held at a target point, e.g. by the mouse. */
     ATTACHMENT

@@ -11,7 +11,7 @@ public enum ConstraintOrder {
      * Still Gauss–Seidel (every projection sees the newest positions), but consecutive projections are
      * independent, so the processor overlaps their square roots and divisions, and a group can be split
      * across threads with the same result for any thread count. The converged answer is the same; the
-     * path to it differs slightly from the as-built order (see the README's Performance section).
+     * path to it differs slightly from the as-built order (see docs/performance.md).
      */
     COLOURED
 }

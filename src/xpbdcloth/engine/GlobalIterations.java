@@ -10,9 +10,8 @@ package xpbdcloth.engine;
  * across the cloth at once; the other families are local and compliant, and Gauss–Seidel converges
  * them in a few sweeps. Taken into the system they made it slow and nearly singular: on `hanging` (32²,
  * all three families, 4865 rows against 3066 degrees of freedom) every solve stopped at its cap of 100
- * CG iterations, 117 ms a step with Jacobi-PCG; split, a solve takes about 50 Jacobi-PCG or 6
- * multigrid-PCG iterations and a step about 20 ms. The price is slower convergence of the whole system
- * where shear is nearly hard (see the README, experiment 7).
+ * CG iterations; split, a solve takes tens of Jacobi-PCG or a few multigrid-PCG iterations. The price is
+ * slower convergence of the whole system where shear is nearly hard (docs/experiments.md, experiment 7).
  * They are swept before the global step so that each iteration ends with the stretch solved.
  *
  * <p>While the substep has contacts, that sweep covers the cloth constraints too. The linear system does

@@ -86,7 +86,7 @@ final class GlobalSolver {
      * μ d added to every row. A compliance already larger than μ d makes the row definite by itself, so
      * such rows get none, and the chain settles within 1e-11 (7e-12).
      * It does not make an infeasible hard system feasible (pins pulled wider than a hard cloth's rest
-     * shape): that cloth still tears, finitely; see the README's Robustness section.
+     * shape): that cloth still tears, finitely; see docs/robustness.md.
      */
     static final double DAMPING = 1e-6;
     /** Armijo's sufficient-decrease constant: any small positive value; 1e-4 is the textbook one. */

@@ -8,7 +8,7 @@ import java.nio.file.StandardCopyOption;
 /** Where experiments write, how thoroughly they run, and where they report progress. */
 final class Context {
     final Path out;
-    /** Also copy each PNG here (the README's docs/), or null. */
+    /** Also copy each PNG here (the project's docs/), or null. */
     final Path docs;
     /** Fewer points and shorter runs: for tests and a first look. */
     final boolean quick;

@@ -43,7 +43,7 @@ public final class Experiments implements Callable<Integer> {
     @Option(names = "--out", description = "output folder", defaultValue = "build/experiments")
     Path out;
 
-    @Option(names = "--docs", description = "also copy the PNGs into this folder (the README's docs/)")
+    @Option(names = "--docs", description = "also copy the PNGs into this folder (the project's docs/)")
     Path docs;
 
     public static void main(String[] args) {

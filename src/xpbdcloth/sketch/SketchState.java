@@ -454,9 +454,8 @@ public final class SketchState {
     /**
      * Says once per scene when a cloth stretches past {@link #TEARING_STRAIN}: Gauss–Seidel carries a
      * stiff cloth's weight to its pins only as far as its sweeps reach, so a big cloth hanging from two
-     * corners pulls apart there (measured, α = 1e-6 m/N at 2 × 10: 64² 480 %, 128² 3300 %; 512² still
-     * 1400 % at 8 × 16, 12 s a step). The notice says what helps: more sweeps while the work limit allows
-     * them, pins along an edge (128² at 2 × 10: 15 %), or a smaller cloth.
+     * corners pulls apart there (docs/solvers.md, "What a big cloth needs"). The notice says what helps:
+     * more sweeps while the work limit allows them, pins along an edge, or a smaller cloth.
      */
     private void warnIfTearing() {
         if (tearingSaid || ++stepsSinceTearCheck < 30) return;
