@@ -1,4 +1,4 @@
-// Any triangle (or polygon) mesh can be a cloth: data/drape.json names an OBJ file beside it
+// Any triangle (or polygon) mesh can be a cloth: data/tablecloth-on-ball.json names an OBJ file beside it
 // (round-tablecloth.obj, a disc of 631 vertices made by xpbd-cloth's own generator) and drops it on a
 // ball. Replace the OBJ with your own mesh, same units (metres), and name its pinned vertex group in the
 // JSON if it has one ("pins": [{ "group": "name" }]).
@@ -8,7 +8,7 @@ ClothView cloth;
 
 void setup() {
   size(900, 650, P3D);
-  cloth = new ClothView(this, "drape.json");
+  cloth = new ClothView(this, "tablecloth-on-ball.json");
   cloth.pixelsPerMetre(300);
 }
 

@@ -241,6 +241,8 @@ public final class ClothApp {
 
         if (recording != null) {
             app.saveFrame(recording.frame(++recorded).getPath());
+            // A line every 60 frames, so a long recording is seen to move (each frame waits for its steps).
+            if (recorded % 60 == 0 && recorded < recording.frames) System.out.printf("  %d of %d frames%n", recorded, recording.frames);
             if (recorded >= recording.frames) {
                 System.out.printf(java.util.Locale.ROOT, "recorded %d frames: sim %.2f ms/step, render %.2f ms/frame, %.0f bytes allocated/frame (smoothed), of which %.0f in the scenes (cloth, particles, colliders) and %.0f in the HUD (text)%n",
                         recorded, simMs, renderMs, allocatedPerFrame, meshAllocated, hudAllocated);

@@ -78,6 +78,9 @@ public final class Main implements Callable<Integer> {
     }
 
     @Override public Integer call() {
+        // The user's own mistakes first (a misspelt scene, a bad size), then the machine's (no display).
+        PresetLoader.byNameOrPath(sketch.scene);
+        parseSize(sketch.size);
         if (!displayAvailable("xpbd-cloth --scene " + sketch.scene)) return 2;
         sketch.open(null);
         return 0;
@@ -94,6 +97,21 @@ public final class Main implements Callable<Integer> {
         }
     }
 
+    /**
+     * The launcher as the user can type it from where they stand: the installed script's absolute path
+     * (found from the jar this class came from, lib/ beside bin/), else its name.
+     */
+    static String launcher() {
+        try {
+            java.nio.file.Path jar = java.nio.file.Path.of(Main.class.getProtectionDomain().getCodeSource().getLocation().toURI());
+            java.nio.file.Path script = jar.getParent().getParent().resolve("bin").resolve("xpbd-cloth");
+            if (java.nio.file.Files.isExecutable(script)) return script.toString();
+        } catch (RuntimeException | java.net.URISyntaxException e) {
+            // not from an installed jar (gradle run, an IDE): the name will do
+        }
+        return "xpbd-cloth";
+    }
+
     /** True if a window can open; otherwise says how to run under Xvfb instead of a stack trace. */
     static boolean displayAvailable(String commandLine) {
         String os = System.getProperty("os.name", "").toLowerCase();
@@ -103,7 +121,7 @@ public final class Main implements Callable<Integer> {
             System.err.println("xpbd-cloth: no display (DISPLAY is not set), so no window can open.");
             System.err.println("Run it under a virtual display instead:");
             System.err.println("  sudo apt-get install -y xvfb libgl1-mesa-dri   # once");
-            System.err.println("  xvfb-run -a -s '-screen 0 1600x1000x24' build/install/xpbd-cloth/bin/" + commandLine);
+            System.err.println("  xvfb-run -a -s '-screen 0 1600x1000x24' " + launcher() + commandLine.substring("xpbd-cloth".length()));
             return false;
         }
         return true;
@@ -139,13 +157,13 @@ public final class Main implements Callable<Integer> {
             if (obj != null) return recordObj();
             PresetLoader.byNameOrPath(sketch.scene); // a broken preset or size fails before anything is said or written
             parseSize(sketch.size);
-            if (!displayAvailable("xpbd-cloth record --scene " + sketch.scene + " --frames " + frames + (out != null ? " --out " + out : ""))) return 2;
             String name = new File(sketch.scene).getName().replace(".json", "");
             // Absolute against where the user stands: Processing resolves a relative path against the sketch's folder.
             File folder = (out != null ? out : new File("build/frames/" + name + (sketch.sideBySide ? "-side-by-side" : ""))).getAbsoluteFile();
             if (gif != null) gif = gif.getAbsoluteFile();
             if (mp4 != null) mp4 = mp4.getAbsoluteFile();
-            ClothApp.Recording recording = new ClothApp.Recording(folder, frames, gif, mp4, fps == null ? 60 : fps); // checks fps first
+            ClothApp.Recording recording = new ClothApp.Recording(folder, frames, gif, mp4, fps == null ? 60 : fps); // checks fps before the display
+            if (!displayAvailable("xpbd-cloth record --scene " + sketch.scene + " --frames " + frames + (out != null ? " --out " + out : ""))) return 2;
             System.out.println("recording " + frames + " frames of " + sketch.scene + " into " + folder);
             sketch.open(recording);
             return 0;

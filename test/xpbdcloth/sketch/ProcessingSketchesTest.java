@@ -50,6 +50,21 @@ class ProcessingSketchesTest {
         return all.stream();
     }
 
+    /** The library's jar holds the simulator and the library, not the launcher, experiments and tools (whose libraries it does not ship). */
+    @org.junit.jupiter.api.Test
+    void theLibraryJarHoldsTheSimulatorOnly() throws Exception {
+        List<String> names = new ArrayList<>();
+        try (java.util.jar.JarFile jar = new java.util.jar.JarFile(LIBRARY.resolve("library/xpbdcloth.jar").toFile())) {
+            jar.stream().forEach(e -> names.add(e.getName()));
+        }
+        assertTrue(names.contains("xpbdcloth/library/ClothView.class") && names.contains("xpbdcloth/engine/Simulation.class"), "the library and the engine");
+        assertTrue(names.contains("presets/hanging.json"), "the built-in presets");
+        for (String n : names)
+            assertFalse(n.startsWith("xpbdcloth/tools/") || n.startsWith("xpbdcloth/experiments/"), "not in a library: " + n);
+        String properties = Files.readString(LIBRARY.resolve("library.properties"));
+        assertTrue(properties.contains("vertex block descent") && properties.contains("box and capsule"), "library.properties describes what the library is now");
+    }
+
     @ParameterizedTest
     @MethodSource("sketches")
     void sketchPreprocessesCompilesRunsAndShowsAMovingCloth(String folder, @TempDir Path out) throws Exception {
