@@ -24,8 +24,13 @@ public final class EngineRange {
     public static final double MAX_POSITION = 1e6, MAX_SPEED = 1e6, MAX_FORCE = 1e9;
     /** Velocity damping, 1/s (1e4 halves a velocity in 69 µs: anything above is a frozen cloth). */
     public static final double MAX_DAMPING = 1e4;
-    /** XPBD compliance α, m/N. */
-    public static final double MAX_COMPLIANCE = 1e6;
+    /**
+     * XPBD compliance α, m/N (or its unit for other constraints). Springs stay far below it; a fabric's rows
+     * reach it where the material is soft and the mesh fine: a hinge's α is (A₀ + A₁)/(B|e|²), 1/B on a
+     * regular grid, so the catalogue's softest bending (B = 1e-6 N·m) is α = 1e6 there, and a membrane
+     * row's α is 1/(qA). α/h² stays finite at the smallest step (1e12/1e-12).
+     */
+    public static final double MAX_COMPLIANCE = 1e12;
     /** A sphere's radius and margin, m. */
     public static final double MAX_RADIUS = 1e6;
     /** Particles in one simulation (2048² = 4 194 304). */

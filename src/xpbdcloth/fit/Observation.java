@@ -5,7 +5,6 @@ import java.nio.file.Path;
 import java.util.Locale;
 import java.util.Random;
 import xpbdcloth.engine.Particles;
-import xpbdcloth.mesh.ClothMesh;
 import xpbdcloth.mesh.ObjReader;
 import xpbdcloth.mesh.ObjWriter;
 import xpbdcloth.scene.Scene;
@@ -23,8 +22,7 @@ public final class Observation {
 
     /** The observed positions, or a {@link FitException} saying why this file is not an observation of this scene. */
     public static double[] read(Path obj, Scene scene) {
-        ClothMesh mesh = ObjReader.read(obj, 0);
-        return check(obj.toString(), mesh.positions(), scene);
+        return check(obj.toString(), ObjReader.vertices(obj), scene);
     }
 
     static double[] check(String file, double[] observed, Scene scene) {

@@ -17,6 +17,13 @@ import xpbdcloth.scene.Scene;
  * in; each file is checked as an {@link Observation} is).
  */
 public final class Trajectory {
+    /**
+     * The most frames a trajectory may have, read or written: a fit keeps every frame's state as a
+     * checkpoint and replays each frame per gradient, so ten thousand steps (200 s at 20 ms) is already
+     * hours of fitting; more is a mistake, not a motion.
+     */
+    public static final int MAX_FRAMES = 10_000;
+
     private Trajectory() {}
 
     /** The frames in a folder, [frame][3·vertex + axis], or a {@link FitException} naming the file that is not a frame of this scene. */
@@ -29,6 +36,8 @@ public final class Trajectory {
         }
         if (files.isEmpty())
             throw new FitException(folder + " holds no .obj frames: a trajectory is a folder of OBJ files, one per step (write one with `xpbd-cloth fit --make-observation DIR --frames 50`)");
+        if (files.size() > MAX_FRAMES)
+            throw new FitException(folder + " holds " + files.size() + " .obj frames, more than the " + MAX_FRAMES + " a trajectory may have");
         double[][] frames = new double[files.size()][];
         for (int f = 0; f < frames.length; f++) frames[f] = Observation.read(files.get(f), scene);
         return frames;
@@ -36,7 +45,7 @@ public final class Trajectory {
 
     /** The scene's first {@code frames} steps as the engine runs them, each with Gaussian noise sigma (m) from seed. */
     public static double[][] simulate(Scene scene, int frames, double sigma, long seed) {
-        if (frames < 1) throw new IllegalArgumentException("frames must be >= 1, was " + frames);
+        checkFrames(frames);
         Simulation sim = scene.simulation();
         double[][] out = new double[frames][];
         for (int f = 0; f < frames; f++) {
@@ -44,6 +53,28 @@ public final class Trajectory {
             out[f] = Observation.withNoise(sim.particles().positions(), sigma, seed + f);
         }
         return out;
+    }
+
+    static void checkFrames(int frames) {
+        if (frames < 1 || frames > MAX_FRAMES) throw new IllegalArgumentException("frames must be in [1, " + MAX_FRAMES + "], was " + frames);
+    }
+
+    /**
+     * Simulates the scene's first {@code frames} steps and writes each as frame-0001.obj … into the folder as
+     * it is made (nothing held but the current frame), each with Gaussian noise sigma (m) from seed.
+     */
+    public static List<Path> simulateInto(Path folder, Scene scene, int frames, double sigma, long seed, String comment) throws IOException {
+        checkFrames(frames);
+        Files.createDirectories(folder);
+        Simulation sim = scene.simulation();
+        List<Path> written = new ArrayList<>();
+        for (int f = 0; f < frames; f++) {
+            sim.step();
+            Path file = ObjExport.frameFile(folder, f + 1);
+            Observation.write(file, scene, Observation.withNoise(sim.particles().positions(), sigma, seed + f), comment + ", frame " + (f + 1));
+            written.add(file);
+        }
+        return written;
     }
 
     /** Writes frame-0001.obj … into the folder (made if missing), each the scene's mesh at that frame. */

@@ -37,17 +37,103 @@ import java.util.TreeSet;
 public final class ObjReader {
     /** A face whose area is below this fraction of its longest side squared counts as degenerate. */
     static final double DEGENERATE_AREA = 1e-12;
+    /**
+     * The largest OBJ file read, bytes. A cloth has at most 262 144 vertices (the presets' limit), a few
+     * tens of MB as text with its faces, normals and texture coordinates; past that a file would take
+     * minutes and gigabytes to refuse.
+     */
+    public static final long MAX_FILE_BYTES = 64L << 20;
+    /** Vertex statements in one file (before welding): four times the largest cloth. */
+    public static final int MAX_VERTICES = 1 << 20;
+    /** Corners of one face: a polygon has tens at most; the checks on a face are then cheap. */
+    public static final int MAX_CORNERS = 256;
+    /** The largest |coordinate| in a file, in its own units: beyond it areas and lengths overflow. */
+    public static final double MAX_COORDINATE = 1e12;
 
     private ObjReader() {}
 
     public static ClothMesh read(Path path, double weldTolerance) {
         String file = path.toString();
-        if (!Files.isRegularFile(path)) throw new MeshFileException(file, 0, Files.exists(path) ? "is not a regular file" : "does not exist");
+        if (!Files.isRegularFile(path)) {
+            String why = Files.exists(path) ? "is not a regular file"
+                    : Files.isSymbolicLink(path) ? "is a symbolic link that leads to no file (a loop, or a missing target)" : "does not exist";
+            throw new MeshFileException(file, 0, why);
+        }
         try {
-            return parse(file, Files.readString(path, StandardCharsets.UTF_8), weldTolerance);
+            long size = Files.size(path);
+            if (size > MAX_FILE_BYTES)
+                throw new MeshFileException(file, 0, "is " + size + " bytes, more than the " + MAX_FILE_BYTES + " an OBJ cloth may have (a cloth has 262144 vertices at most)");
+            return parse(file, utf8(file, Files.readAllBytes(path)), weldTolerance);
         } catch (IOException e) {
             throw new MeshFileException(file, 0, "cannot be read: " + e.getMessage());
         }
+    }
+
+    /**
+     * Only the vertex positions of an OBJ, in file order, xyz interleaved, unwelded and whatever its faces
+     * (an observation of a cloth is its vertices in the scene's order: two that coincide are two vertices,
+     * and the faces are the scene's). The same limits on the file, its text and its numbers as {@link #read}.
+     */
+    public static double[] vertices(Path path) {
+        String file = path.toString();
+        if (!Files.isRegularFile(path)) throw new MeshFileException(file, 0, Files.exists(path) ? "is not a regular file" : "does not exist");
+        String text;
+        try {
+            long size = Files.size(path);
+            if (size > MAX_FILE_BYTES) throw new MeshFileException(file, 0, "is " + size + " bytes, more than the " + MAX_FILE_BYTES + " an OBJ may have");
+            text = utf8(file, Files.readAllBytes(path));
+        } catch (IOException e) {
+            throw new MeshFileException(file, 0, "cannot be read: " + e.getMessage());
+        }
+        Parse parse = new Parse(file, 0);
+        String[] lines = text.split("\r\n|\n|\r", -1);
+        double[] out = new double[3 * 64];
+        int n = 0;
+        for (int ln = 1; ln <= lines.length; ln++) {
+            String line = lines[ln - 1].trim();
+            if (!line.startsWith("v ") && !line.startsWith("v\t")) continue;
+            int hash = line.indexOf('#');
+            String[] tok = (hash >= 0 ? line.substring(0, hash) : line).trim().split("\\s+");
+            if (n == MAX_VERTICES) throw parse.fail(ln, "more than " + MAX_VERTICES + " vertices: too many for a cloth");
+            if (tok.length < 4) throw parse.fail(ln, "a vertex needs x y z, was " + (tok.length - 1) + " numbers");
+            double[] p = parse.coordinates(ln, tok, "vertex coordinate ", "xyz");
+            if (3 * n + 3 > out.length) out = Arrays.copyOf(out, 2 * out.length);
+            System.arraycopy(p, 0, out, 3 * n, 3);
+            n++;
+        }
+        if (n == 0) throw new MeshFileException(file, 0, "has no vertices (v)");
+        return Arrays.copyOf(out, 3 * n);
+    }
+
+    /** The bytes as UTF-8 text, a byte-order mark dropped; bytes that are not UTF-8 are named by their line. */
+    static String utf8(String file, byte[] bytes) {
+        java.nio.charset.CharsetDecoder strict = StandardCharsets.UTF_8.newDecoder()
+                .onMalformedInput(java.nio.charset.CodingErrorAction.REPORT).onUnmappableCharacter(java.nio.charset.CodingErrorAction.REPORT);
+        try {
+            String text = strict.decode(java.nio.ByteBuffer.wrap(bytes)).toString();
+            return text.startsWith("\uFEFF") ? text.substring(1) : text;
+        } catch (java.nio.charset.CharacterCodingException e) {
+            int line = 1;
+            for (int start = 0; start < bytes.length; line++) {
+                int end = start;
+                while (end < bytes.length && bytes[end] != '\n') end++;
+                try {
+                    strict.reset().decode(java.nio.ByteBuffer.wrap(bytes, start, end - start));
+                } catch (java.nio.charset.CharacterCodingException bad) {
+                    throw new MeshFileException(file, line, "is not UTF-8 text here (an OBJ file is text; is this a binary file?)");
+                }
+                start = end + 1;
+            }
+            throw new MeshFileException(file, 0, "is not UTF-8 text");
+        }
+    }
+
+    /** A token of the file as an error message may show it: at most 24 characters, control characters escaped. */
+    static String shown(String token) {
+        String t = token.length() > 24 ? token.substring(0, 24) + "…" : token;
+        StringBuilder b = new StringBuilder();
+        for (char c : t.toCharArray()) b.append(Character.isISOControl(c) ? String.format("\\u%04x", (int) c) : String.valueOf(c));
+        return b.toString();
     }
 
     /** Parses OBJ text; {@code file} names it in errors. */
@@ -88,6 +174,7 @@ public final class ObjReader {
         MeshFileException fail(int line, String problem) { return new MeshFileException(file, line, problem); }
 
         ClothMesh run(String text) {
+            if (text.startsWith("\uFEFF")) text = text.substring(1); // a byte-order mark is no statement
             String[] lines = text.split("\r\n|\n|\r", -1);
             for (int ln = 1; ln <= lines.length; ln++) {
                 String s = lines[ln - 1];
@@ -106,7 +193,11 @@ public final class ObjReader {
                         break;
                     case "vt": textureCoordinate(ln, tok); break;
                     case "vn": case "vp": case "s": case "usemtl": case "mtllib": break;
-                    default: throw fail(ln, "unsupported statement \"" + tok[0] + "\" (a cloth reads v, vt, f, l, p, g, o; vn, vp, s, usemtl, mtllib are read past)");
+                    default:
+                        // A file whose first statement is not OBJ is not an OBJ file: say so, and echo nothing more of it.
+                        if (vertices.isEmpty() && faces.isEmpty() && texture.isEmpty())
+                            throw fail(ln, "is not an OBJ file: its first statement is not one (a cloth reads v, vt, f, l, p, g, o)");
+                        throw fail(ln, "unsupported statement \"" + shown(tok[0]) + "\" (a cloth reads v, vt, f, l, p, g, o; vn, vp, s, usemtl, mtllib are read past)");
                 }
             }
             if (faces.isEmpty() && segments.isEmpty()) throw fail(0, "has no faces (f) or lines (l): nothing to build a cloth from");
@@ -115,7 +206,10 @@ public final class ObjReader {
 
         void vertex(int ln, String[] tok) {
             if (tok.length < 4) throw fail(ln, "a vertex needs x y z, was " + (tok.length - 1) + " numbers");
+            if (vertices.size() == MAX_VERTICES) throw fail(ln, "more than " + MAX_VERTICES + " vertices: too many for a cloth");
             double[] p = coordinates(ln, tok, "vertex coordinate ", "xyz");
+            for (int d = 0; d < 3; d++)
+                if (Math.abs(p[d]) > MAX_COORDINATE) throw fail(ln, "vertex coordinate " + "xyz".charAt(d) + " must be within ±" + MAX_COORDINATE + ", was " + shown(tok[d + 1]));
             vertices.add(p);
             weldedOf.add(weld(p));
         }
@@ -133,9 +227,9 @@ public final class ObjReader {
                 try {
                     out[d] = Double.parseDouble(tok[d + 1]);
                 } catch (NumberFormatException e) {
-                    throw fail(ln, what + axes.charAt(d) + " is not a number: \"" + tok[d + 1] + "\"");
+                    throw fail(ln, what + axes.charAt(d) + " is not a number: \"" + shown(tok[d + 1]) + "\"");
                 }
-                if (!Double.isFinite(out[d])) throw fail(ln, what + axes.charAt(d) + " must be finite, was " + tok[d + 1]);
+                if (!Double.isFinite(out[d])) throw fail(ln, what + axes.charAt(d) + " must be finite, was " + shown(tok[d + 1]));
             }
             return out;
         }
@@ -144,12 +238,7 @@ public final class ObjReader {
         double[] cornerUV(int ln, String token) {
             String[] parts = token.split("/", -1);
             if (parts.length < 2 || parts[1].isEmpty()) return null;
-            int i;
-            try {
-                i = Integer.parseInt(parts[1]);
-            } catch (NumberFormatException e) {
-                throw fail(ln, "corner \"" + token + "\": its texture index is not a number");
-            }
+            int i = index(ln, parts[1], "corner \"" + shown(token) + "\": its texture index is not a number", "texture index ");
             int n = texture.size();
             int at = i > 0 ? i - 1 : n + i;
             if (i == 0 || at < 0 || at >= n)
@@ -179,15 +268,20 @@ public final class ObjReader {
             return welded.size() - 1;
         }
 
+        /** An index as written: an integer, however long (one too large for any file is out of range, not "not a number"). */
+        int index(int ln, String digits, String notANumber, String what) {
+            if (!digits.matches("-?[0-9]+")) throw fail(ln, notANumber);
+            try {
+                return Integer.parseInt(digits);
+            } catch (NumberFormatException tooLong) {
+                throw fail(ln, what + shown(digits) + " is out of range: no file has that many");
+            }
+        }
+
         /** The welded vertex a corner token names ("7", "7/2", "7//3", "7/2/3", "-1"). */
         int corner(int ln, String token) {
             String v = token.split("/", -1)[0];
-            int i;
-            try {
-                i = Integer.parseInt(v);
-            } catch (NumberFormatException e) {
-                throw fail(ln, "corner \"" + token + "\" does not start with a vertex index");
-            }
+            int i = index(ln, v, "corner \"" + shown(token) + "\" does not start with a vertex index", "vertex index ");
             int n = vertices.size();
             int at = i > 0 ? i - 1 : n + i;
             if (i == 0 || at < 0 || at >= n)
@@ -197,14 +291,17 @@ public final class ObjReader {
 
         void face(int ln, String[] tok) {
             if (tok.length < 4) throw fail(ln, "a face needs at least 3 corners, was " + (tok.length - 1));
+            if (tok.length - 1 > MAX_CORNERS) throw fail(ln, "a face has at most " + MAX_CORNERS + " corners, this one " + (tok.length - 1));
             int[] f = new int[tok.length - 1];
+            Map<Integer, Integer> seen = new HashMap<>(); // vertex → its first corner: one pass, not every pair
             for (int j = 0; j < f.length; j++) {
                 f[j] = corner(ln, tok[j + 1]);
-                for (int i = 0; i < j; i++)
-                    if (f[i] == f[j])
-                        throw fail(ln, "face is degenerate: corners " + (i + 1) + " (" + tok[i + 1] + ") and " + (j + 1) + " (" + tok[j + 1] + ") are the same vertex"
-                                + (tolerance > 0 ? " after welding within " + tolerance + " m" : ""));
+                Integer i = seen.putIfAbsent(f[j], j);
+                if (i != null)
+                    throw fail(ln, "face is degenerate: corners " + (i + 1) + " (" + shown(tok[i + 1]) + ") and " + (j + 1) + " (" + shown(tok[j + 1]) + ") are the same vertex"
+                            + (tolerance > 0 ? " after welding within " + tolerance + " m" : ""));
             }
+            if (f.length > 3) selfIntersection(ln, f);
             int[] sorted = f.clone();
             Arrays.sort(sorted);
             Integer twin = faceKeys.putIfAbsent(Arrays.toString(sorted), ln);
@@ -228,6 +325,46 @@ public final class ObjReader {
             faceUVs.add(uv);
             faceLines.add(ln);
             group(f);
+        }
+
+        /**
+         * A polygon whose sides cross (a bowtie) is no face: its corners are projected onto the plane of its
+         * Newell normal, and no two sides that share no corner may cross there.
+         */
+        void selfIntersection(int ln, int[] f) {
+            double nx = 0, ny = 0, nz = 0;
+            for (int j = 0; j < f.length; j++) {
+                double[] a = welded.get(f[j]), b = welded.get(f[(j + 1) % f.length]);
+                nx += (a[1] - b[1]) * (a[2] + b[2]);
+                ny += (a[2] - b[2]) * (a[0] + b[0]);
+                nz += (a[0] - b[0]) * (a[1] + b[1]);
+            }
+            // Drop the axis the normal is most along: the polygon's shadow on the other two keeps its shape.
+            // A bowtie's Newell normal cancels to nothing: then drop the axis the corners spread least along.
+            double[] lo = {Double.MAX_VALUE, Double.MAX_VALUE, Double.MAX_VALUE}, hi = {-Double.MAX_VALUE, -Double.MAX_VALUE, -Double.MAX_VALUE};
+            for (int c : f) for (int d = 0; d < 3; d++) { lo[d] = Math.min(lo[d], welded.get(c)[d]); hi[d] = Math.max(hi[d], welded.get(c)[d]); }
+            double extent = Math.max(hi[0] - lo[0], Math.max(hi[1] - lo[1], hi[2] - lo[2]));
+            if (Math.sqrt(nx * nx + ny * ny + nz * nz) < 1e-9 * extent * extent) { nx = extent - (hi[0] - lo[0]); ny = extent - (hi[1] - lo[1]); nz = extent - (hi[2] - lo[2]); }
+            int drop = Math.abs(nx) >= Math.abs(ny) && Math.abs(nx) >= Math.abs(nz) ? 0 : Math.abs(ny) >= Math.abs(nz) ? 1 : 2;
+            int u = drop == 0 ? 1 : 0, v = drop == 2 ? 1 : 2;
+            for (int a = 0; a < f.length; a++)
+                for (int b = a + 2; b < f.length; b++) {
+                    if (a == 0 && b == f.length - 1) continue; // adjacent through the last corner
+                    double[] p = welded.get(f[a]), q = welded.get(f[(a + 1) % f.length]), r = welded.get(f[b]), t = welded.get(f[(b + 1) % f.length]);
+                    if (cross(p[u], p[v], q[u], q[v], r[u], r[v], t[u], t[v]))
+                        throw fail(ln, "face crosses itself: its sides " + (a + 1) + "–" + (a + 2) + " and " + (b + 1) + "–" + ((b + 1) % f.length + 1) + " cross (corners out of order?)");
+                }
+        }
+
+        /** Whether segments pq and rt cross at a point inside both (touching at an end does not count). */
+        static boolean cross(double px, double py, double qx, double qy, double rx, double ry, double tx, double ty) {
+            double d1 = orient(rx, ry, tx, ty, px, py), d2 = orient(rx, ry, tx, ty, qx, qy);
+            double d3 = orient(px, py, qx, qy, rx, ry), d4 = orient(px, py, qx, qy, tx, ty);
+            return d1 * d2 < 0 && d3 * d4 < 0;
+        }
+
+        static double orient(double ax, double ay, double bx, double by, double cx, double cy) {
+            return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
         }
 
         void line(int ln, String[] tok) {

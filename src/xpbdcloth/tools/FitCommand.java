@@ -91,7 +91,7 @@ final class FitCommand implements Callable<Integer> {
         Preset preset = PresetLoader.byNameOrPath(scene);
         if (!(noiseMm >= 0) || !Double.isFinite(noiseMm)) throw new IllegalArgumentException("noise-mm must be >= 0, was " + noiseMm);
         if (maxIterations < 1) throw new IllegalArgumentException("max-iterations must be >= 1, was " + maxIterations);
-        if (frames < 0) throw new IllegalArgumentException("frames must be >= 0, was " + frames);
+        if (frames < 0 || frames > Trajectory.MAX_FRAMES) throw new IllegalArgumentException("frames must be in [0, " + Trajectory.MAX_FRAMES + "], was " + frames);
         if ((makeObservation == null) == (observed == null))
             throw new IllegalArgumentException("give exactly one of --observed FILE (fit) and --make-observation FILE, was " + (observed == null ? "neither" : "both"));
         if (frames > 0 && makeObservation == null)
@@ -147,9 +147,8 @@ final class FitCommand implements Callable<Integer> {
     }
 
     private int makeTrajectory(Scene sc) throws Exception {
-        double[][] motion = Trajectory.simulate(sc, frames, noiseMm * 1e-3, seed);
         Path folder = makeObservation.toPath();
-        List<Path> files = Trajectory.write(folder, sc, motion, String.format(Locale.ROOT,
+        List<Path> files = Trajectory.simulateInto(folder, sc, frames, noiseMm * 1e-3, seed, String.format(Locale.ROOT,
                 "xpbd-cloth fit --make-observation: %s, noise %.3f mm, seed %d", sc.preset().name, noiseMm, seed));
         out.printf(Locale.ROOT, "wrote %d frames (%.2f s of %s from its start, one per step of %.4f s) to %s, noise %.3f mm%n",
                 files.size(), frames * sc.simulation().settings().timestep(), sc.preset().name, sc.simulation().settings().timestep(), folder, noiseMm);

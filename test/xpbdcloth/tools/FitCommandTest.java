@@ -26,6 +26,20 @@ class FitCommandTest {
         return cli.execute(args);
     }
 
+    /** A trajectory has at most Trajectory.MAX_FRAMES frames: a million is refused at once, and nothing is written. */
+    @Test
+    void frameCountsAreBounded(@TempDir Path dir) throws Exception {
+        Path folder = dir.resolve("motion");
+        long t0 = System.nanoTime();
+        assertEquals(2, run("fit", "--scene", "drape", "--make-observation", folder.toString(), "--frames", "1000000"));
+        assertTrue(err.toString().contains("frames must be in [0, " + xpbdcloth.fit.Trajectory.MAX_FRAMES + "], was 1000000"), err.toString());
+        assertFalse(Files.exists(folder), "nothing written");
+        assertTrue((System.nanoTime() - t0) / 1e9 < 10, "refused at once");
+        // Written as it is made: the folder holds every frame it says it wrote.
+        assertEquals(0, run("fit", "--scene", "drape", "--make-observation", folder.toString(), "--frames", "3"), err.toString());
+        try (java.util.stream.Stream<Path> files = Files.list(folder)) { assertEquals(3, files.count()); }
+    }
+
     @Test
     void theWholeLoopRecoversTheScenesCompliancesAndWritesAPresetThatLoads(@TempDir Path dir) throws Exception {
         Path shape = dir.resolve("drape-rest.obj");
