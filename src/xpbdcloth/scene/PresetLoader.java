@@ -254,6 +254,10 @@ public final class PresetLoader {
                 if (cloth.mesh.triangleUVs() == null)
                     throw fail("fabric.warp", "is missing, and " + cloth.meshFile + " cannot give it: " + cloth.mesh.whyNoTextureCoordinates() + "; give the warp direction");
             }
+            boolean triangles = cloth.isMesh() ? cloth.mesh.faceCount() > 0 : cloth.columns > 1 && cloth.rows > 1;
+            String none = "and this cloth has none (" + (cloth.isMesh() ? cloth.meshFile + " has only lines" : "a single row or column of particles") + ")";
+            if (fabric != null && !triangles) throw fail("fabric", "is a membrane of triangles, " + none + ": give the cloth two rows and columns, or spring families");
+            if (root.json.has("aerodynamics") && !triangles) throw fail("aerodynamics", "acts on triangles, " + none + ": use wind, which acts on particles");
             // A fabric is a whole material: the spring families are then optional (added on top if given).
             Node fs = fabric == null ? required(root, "families") : optional(root, "families");
             Map<ConstraintFamily, Preset.Material> families = fs == null ? new EnumMap<>(ConstraintFamily.class) : families(fs);

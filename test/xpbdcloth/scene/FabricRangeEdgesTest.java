@@ -17,6 +17,19 @@ class FabricRangeEdgesTest {
             + "\"fabric\":{\"warpModulus\":%s,\"weftModulus\":%s,\"poisson\":0,\"shearModulus\":%s,\"bendingStiffness\":%s,\"warp\":[1,0,0]},"
             + "\"solver\":{\"mode\":\"XPBD\",\"iterations\":2,\"substeps\":10,\"dt\":0.02,\"mullerCorrection\":true,\"gravity\":[0,-9.81,0],\"type\":\"vertex-block-descent\"}}";
 
+    /** A fabric or aerodynamics on a cloth with no triangles (one row of particles) is refused naming the field (the fuzzer found it reported as "(building the scene)"). */
+    @Test
+    void aFabricOrAirOnARopeIsRefusedByName() {
+        String rope = String.format(FABRIC, 30, 1, "410", "2027", "53", "2e-5").replace("\"height\":1.0", "\"height\":0");
+        PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse("rope.json", rope));
+        assertEquals("fabric", e.field(), e.getMessage());
+        assertTrue(e.problem().contains("single row or column"), e.getMessage());
+        String air = String.format(FABRIC, 30, 1, "410", "2027", "53", "2e-5").replace("\"height\":1.0", "\"height\":0")
+                .replaceFirst("\"fabric\":\\{[^}]*\\},", "\"families\":{\"structural\":{\"stiffness\":1,\"compliance\":0}},\"aerodynamics\":{\"density\":1.2,\"drag\":1,\"lift\":1,\"air\":[5,0,0]},");
+        PresetException a = assertThrows(PresetException.class, () -> PresetLoader.parse("rope.json", air));
+        assertEquals("aerodynamics", a.field(), a.getMessage());
+    }
+
     @Test
     void theSoftestDocumentedFabricBuildsAndSteps() {
         for (int n : new int[] {32, 64, 128}) {

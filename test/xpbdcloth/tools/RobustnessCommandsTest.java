@@ -84,6 +84,34 @@ class RobustnessCommandsTest {
         assertTrue(meshes >= drawn / 2, "cases that are really triangle meshes (some have no area): " + meshes + " of " + drawn);
     }
 
+    /**
+     * The preset fuzzer draws every field the loader reads: the fields are taken from the loader's own
+     * lists of the keys each object may have (its Set.of(…) and List.of(…) calls), not written out here, so
+     * a field added to the loader and not to the fuzzer fails this test. The fabric catalogue's own fields
+     * (a different file) are left out.
+     */
+    @Test
+    void thePresetFuzzerDrawsEveryFieldTheLoaderReads() throws Exception {
+        String loader = java.nio.file.Files.readString(java.nio.file.Path.of("src/xpbdcloth/scene/PresetLoader.java"));
+        java.util.Set<String> fields = new java.util.TreeSet<>();
+        java.util.regex.Matcher list = java.util.regex.Pattern.compile("(?:Set|List)\\.of\\(([^)]*)\\)").matcher(loader);
+        while (list.find()) {
+            java.util.regex.Matcher word = java.util.regex.Pattern.compile("\"([a-zA-Z]+)\"").matcher(list.group(1));
+            while (word.find()) fields.add(word.group(1));
+        }
+        fields.removeAll(java.util.Set.of("fabrics", "source", "sample", "stretching", "bending"));
+        fields.removeAll(xpbdcloth.scene.PresetLoader.BUILT_IN); // the list of scene names, not fields
+        assertTrue(fields.size() > 60, "the loader's fields: " + fields);
+        java.util.Set<String> drawn = new java.util.TreeSet<>();
+        for (long seed = 1; seed <= 400; seed++) {
+            java.util.regex.Matcher key = java.util.regex.Pattern.compile("\"([a-zA-Z]+)\"\\s*:").matcher(PresetFuzz.text(seed));
+            while (key.find()) drawn.add(key.group(1));
+        }
+        java.util.Set<String> missing = new java.util.TreeSet<>(fields);
+        missing.removeAll(drawn);
+        assertEquals(java.util.Set.of(), missing, "fields the loader reads that no fuzz case draws");
+    }
+
     @Test
     void fuzzPresets() {
         StringBuilder failures = new StringBuilder();
