@@ -138,12 +138,9 @@ final class Hud {
                 || laidHelp != s.showHelp || laidLegend != s.wireframe || laidLabelChars != labelChars) {
             int longest = 0;
             for (String line : lines) longest = Math.max(longest, line.length());
-            int helpLongest = 0;
-            for (KeyBinding k : KeyBindings.all()) helpLongest = Math.max(helpLongest, HELP_KEY_CHARS + k.help.length());
-            for (String m : MOUSE_HELP) helpLongest = Math.max(helpLongest, m.length());
             layout = new HudLayout(g.width, g.height, charWidth, lines.length, longest, s.message().length(),
                     labels == null ? null : new int[] {labels[0].length(), labels[1].length()}, s.wireframe,
-                    s.showHelp ? KeyBindings.all().size() + MOUSE_HELP.length + 3 : 0, helpLongest);
+                    s.showHelp ? HELP_TEXTS : null, HELP_HEADINGS);
             laidLines = lines;
             laidMessage = s.message();
             laidHelp = s.showHelp;
@@ -249,29 +246,38 @@ final class Hud {
     static final String[] MOUSE_HELP = {"left-drag  rotate", "right-drag / wheel  zoom", "middle-drag (Meta+left)  pan",
             "Shift+drag  lock axis", "double-click  reset view", "Ctrl+left-drag  grab the cloth"};
 
-    /** The keys and mouse controls, in as many columns as the window's height needs. */
+    /** The help's texts in order (headings, the key table, a blank, the mouse), and which are headings. */
+    static final String[] HELP_TEXTS;
+    static final boolean[] HELP_HEADINGS;
+    static {
+        List<String> texts = new java.util.ArrayList<>();
+        texts.add("keys (h hides this)");
+        for (KeyBinding k : KeyBindings.all()) {
+            String key = k.key == ' ' ? "space" : String.valueOf(k.key);
+            texts.add(key + "       ".substring(key.length()) + k.help);
+        }
+        texts.add("");
+        texts.add("mouse");
+        java.util.Collections.addAll(texts, MOUSE_HELP);
+        HELP_TEXTS = texts.toArray(new String[0]);
+        HELP_HEADINGS = new boolean[HELP_TEXTS.length];
+        HELP_HEADINGS[0] = true;
+        HELP_HEADINGS[texts.indexOf("mouse")] = true;
+    }
+
+    /** The keys and mouse controls, in the columns the layout chose, long lines wrapped. */
     private void help(PGraphics g, HudLayout l) {
-        List<KeyBinding> keys = KeyBindings.all();
         g.noStroke();
         g.fill(0, 185);
         g.rect(l.help.x, l.help.y, l.help.w, l.help.h, 6);
         float columnW = l.help.w / l.helpColumns;
-        int n = 0;
-        n = helpLine(g, l, columnW, n, "keys (h hides this)", true);
-        for (KeyBinding k : keys) {
-            String key = k.key == ' ' ? "space" : String.valueOf(k.key);
-            n = helpLine(g, l, columnW, n, key + "       ".substring(key.length()) + k.help, false);
+        for (int i = 0; i < HELP_TEXTS.length; i++) {
+            if (l.helpRowOf[i] < 0) continue; // a blank line at a column's top is left out
+            if (HELP_HEADINGS[i]) g.fill(255, 220, 140);
+            else g.fill(230);
+            List<String> rows = l.helpWrapped.get(i);
+            for (int k = 0; k < rows.size(); k++)
+                g.text(rows.get(k), l.help.x + l.helpColumnOf[i] * columnW + HudLayout.PAD, l.help.y + 6 + HudLayout.HELP_LINE * (l.helpRowOf[i] + k));
         }
-        n = helpLine(g, l, columnW, n, "", false);
-        n = helpLine(g, l, columnW, n, "mouse", true);
-        for (String m : MOUSE_HELP) n = helpLine(g, l, columnW, n, m, false);
-    }
-
-    private int helpLine(PGraphics g, HudLayout l, float columnW, int n, String text, boolean heading) {
-        int column = n / l.helpRows, row = n % l.helpRows;
-        if (heading) g.fill(255, 220, 140);
-        else g.fill(230);
-        g.text(HudLayout.cut(text, l.helpColumnChars), l.help.x + column * columnW + HudLayout.PAD, l.help.y + 6 + HudLayout.HELP_LINE * row);
-        return n + 1;
     }
 }
