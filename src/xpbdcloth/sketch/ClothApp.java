@@ -113,7 +113,24 @@ public final class ClothApp {
         double distance = size * (framedSideBySide ? 2.6 : 1.5) + 0.4;
         // Horizontal cloths are seen from higher up, so their surface shows.
         double pitch = c.plane == xpbdcloth.engine.ClothBuilder.Plane.HORIZONTAL && c.rows > 1 ? -0.55 : -0.15;
-        camera.setStartView(cx, cy, c.origin[2], distance, pitch);
+        Framing.belowHud(camera, restBox(), app.width, app.height, cx, cy, c.origin[2], distance, pitch);
+    }
+
+    /** The running cloths' rest box {min x, y, z, max x, y, z}, side by side both (each at its offset). */
+    private double[] restBox() {
+        double[] box = {Double.MAX_VALUE, Double.MAX_VALUE, Double.MAX_VALUE, -Double.MAX_VALUE, -Double.MAX_VALUE, -Double.MAX_VALUE};
+        List<Scene> running = state.running();
+        for (int i = 0; i < running.size(); i++) {
+            double[] x = running.get(i).cloth().mesh().positions();
+            double ox = state.offsetX(i);
+            for (int k = 0; k < x.length; k += 3)
+                for (int a = 0; a < 3; a++) {
+                    double v = x[k + a] + (a == 0 ? ox : 0);
+                    box[a] = Math.min(box[a], v);
+                    box[3 + a] = Math.max(box[3 + a], v);
+                }
+        }
+        return box;
     }
 
     /** A mesh cloth is framed by its rest bounding box; a flat-lying one (it will fall and drape) from higher up. */
@@ -123,7 +140,7 @@ public final class ClothApp {
         boolean lying = height < 0.2 * size;
         double cy = lying ? m.max(1) - 0.3 * size : 0.5 * (m.min(1) + m.max(1));
         double distance = size * (framedSideBySide ? 2.6 : 1.5) + 0.4;
-        camera.setStartView(0.5 * (m.min(0) + m.max(0)), cy, 0.5 * (m.min(2) + m.max(2)), distance, lying ? -0.55 : -0.15);
+        Framing.belowHud(camera, restBox(), app.width, app.height, 0.5 * (m.min(0) + m.max(0)), cy, 0.5 * (m.min(2) + m.max(2)), distance, lying ? -0.55 : -0.15);
     }
 
     /**
