@@ -25,8 +25,8 @@ public abstract class Collider {
      * PhysX calls the maximum depenetration velocity). A cloth found deep inside a collider (one placed
      * around it, or driven into it faster than contacts could hold) comes out over several substeps instead
      * of being flung away at depth/h: a box of half-extent 10 m around a cloth threw it at about 5e4 m/s.
-     * Particles that start a substep outside, or inside by less than this speed times h (2 cm at h = 2 ms),
-     * are put on the surface as before.
+     * Particles that start a substep outside, or inside by less than this speed times the substep, are put
+     * on the surface as before, so resting and sliding contacts are unchanged.
      */
     public static final double MAX_DEPENETRATION_SPEED = 10;
 

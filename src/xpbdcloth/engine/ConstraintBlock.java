@@ -80,7 +80,17 @@ public abstract class ConstraintBlock {
     public final void setCompliance(double alpha) {
         compliance = Check.inRange("compliance", alpha, 0, EngineRange.MAX_COMPLIANCE);
         complianceOf = null;
+        materialChanged();
     }
+
+    /** Changes of the block's material (compliances, or a subclass's own coefficients) so far. */
+    private long materialVersion;
+
+    /** How many times the material changed: a solver that derives stiffnesses from it re-derives them when this moves. */
+    final long materialVersion() { return materialVersion; }
+
+    /** Marks the material changed (a subclass calls it when it rewrites coefficients of its own). */
+    final void materialChanged() { materialVersion++; }
 
     /** PBD stiffness k ∈ [0, 1] for constraint i alone. */
     public final void setStiffness(int i, double k) {
@@ -102,6 +112,7 @@ public abstract class ConstraintBlock {
             complianceOf = filled(compliance);
         }
         complianceOf[i] = alpha;
+        materialChanged();
     }
 
     private double[] filled(double value) {

@@ -102,6 +102,7 @@ public final class MembraneBlock extends ConstraintBlock {
             System.arraycopy(rows[r], 0, row, 3 * i, 3);
             setCompliance(i, 1 / (scale * area[i]));
         }
+        materialChanged(); // the rows too, whatever the compliances did
     }
 
     /** The triangle's Green strain (E_uu, E_vv, γ) in the material frame. */
@@ -116,9 +117,25 @@ public final class MembraneBlock extends ConstraintBlock {
      * Triangle t's largest principal stretch less one: √(1 + 2E₁) − 1 with E₁ the larger eigenvalue of the
      * Green strain tensor [[E_uu, γ/2], [γ/2, E_vv]]. It is the engineering strain along the direction the
      * triangle stretches most, the number a spring's |x|/L − 1 reads, so springs and fabric compare.
-     * Allocation-free (the HUD calls it every frame).
+     * Allocation-free (the HUD calls it every frame); not for the solver's threads (it uses the block's scratch).
      */
     public double principalStrain(int t, Particles p) {
+        final double[] g = gram(t, p);
+        double euu = 0.5 * (g[0] - 1), evv = 0.5 * (g[1] - 1), half = 0.5 * (euu - evv);
+        double largest = 0.5 * (euu + evv) + Math.sqrt(half * half + 0.25 * g[2] * g[2]);
+        return Math.sqrt(Math.max(0, 1 + 2 * largest)) - 1;
+    }
+
+    /** Triangle t's larger normal Green strain, max(E_uu, E_vv): along the warp or the weft. Allocation-free, as above. */
+    public double largestNormalStrain(int t, Particles p) {
+        final double[] g = gram(t, p);
+        return 0.5 * (Math.max(g[0], g[1]) - 1);
+    }
+
+    private final double[] gramScratch = new double[3];
+
+    /** f_u·f_u, f_v·f_v, f_u·f_v of triangle t (Fᵀ F), in the block's scratch. */
+    private double[] gram(int t, Particles p) {
         final double[] x = p.x;
         final int i = 3 * t, a = 3 * particles[3 * i], b = 3 * particles[3 * i + 1], c = 3 * particles[3 * i + 2];
         final double P = restInverse[4 * i], Q = restInverse[4 * i + 1], R = restInverse[4 * i + 2], S = restInverse[4 * i + 3];
@@ -130,9 +147,10 @@ public final class MembraneBlock extends ConstraintBlock {
             vv += fv * fv;
             uv += fu * fv;
         }
-        double euu = 0.5 * (uu - 1), evv = 0.5 * (vv - 1), half = 0.5 * (euu - evv);
-        double largest = 0.5 * (euu + evv) + Math.sqrt(half * half + 0.25 * uv * uv);
-        return Math.sqrt(Math.max(0, 1 + 2 * largest)) - 1;
+        gramScratch[0] = uu;
+        gramScratch[1] = vv;
+        gramScratch[2] = uv;
+        return gramScratch;
     }
 
     /** Rest area of triangle t, m². */

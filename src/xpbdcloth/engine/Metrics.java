@@ -104,6 +104,17 @@ public final class Metrics {
         return n == 0 ? 0 : sum / n;
     }
 
+    /** The largest normal Green strain (E_uu or E_vv, along warp or weft) over the membrane's triangles (0 if none). */
+    public static double largestGreenStrain(Simulation sim) {
+        double max = 0;
+        for (int k = 0; k < sim.blocks().size(); k++)
+            if (sim.blocks().get(k) instanceof MembraneBlock) {
+                MembraneBlock m = (MembraneBlock) sim.blocks().get(k);
+                for (int t = 0; t < m.triangleCount(); t++) max = Math.max(max, m.largestNormalStrain(t, sim.particles()));
+            }
+        return max;
+    }
+
     /** Whether the simulation has distance constraints of this family. */
     static boolean has(Simulation sim, ConstraintFamily family) {
         for (int k = 0; k < sim.blocks().size(); k++) {

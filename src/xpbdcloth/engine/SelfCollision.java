@@ -166,7 +166,7 @@ public final class SelfCollision extends Collider implements Team.Job {
     /** The pairs found by particles of share id (an ascending range), into that share's finds. */
     private void find(Particles p, int id, int shares) {
         final int n = p.count();
-        final double[] x = p.x, w = p.w, sx = sortedX;
+        final double[] x = p.x, w = p.w;
         final Finds out = finds[id];
         final int[] visitedBy = out.visitedBy;
         final int table = cellStart.length - 1;
@@ -182,17 +182,7 @@ public final class SelfCollision extends Collider implements Team.Job {
                 // A particle moving many cells in a substep (a fast one on a fine cloth) would search more
                 // cells than there are particles: look at every particle instead (the fuzzer found a 4 × 2
                 // cloth taking minutes a step, searching 1e11 cells).
-                for (int j = 0; j < n; j++) {
-                    final double mj = reachOf[j];
-                    if (j == i || mj > mi || (mj == mi && j < i)) continue;
-                    final int m = 3 * j;
-                    final double ex = xi - x[m], ey = yi - x[m + 1], ez = zi - x[m + 2], d2 = ex * ex + ey * ey + ez * ez;
-                    final double reach = base + mi + mj;
-                    if (d2 >= reach * reach || w[i] + w[j] == 0) continue;
-                    final double rx = rest[k] - rest[m], ry = rest[k + 1] - rest[m + 1], rz = rest[k + 2] - rest[m + 2];
-                    if (rx * rx + ry * ry + rz * rz < neighbours) continue;
-                    out.add(Math.min(i, j), Math.max(i, j));
-                }
+                scan(out, i, 0, n, mi, w, neighbours);
                 continue;
             }
             final int r = (int) span;
@@ -204,19 +194,30 @@ public final class SelfCollision extends Collider implements Team.Job {
                         // Two of the cells searched can share a bucket: visit it once, or its pairs would be found twice.
                         if (visitedBy[bucket] == i + 1) continue;
                         visitedBy[bucket] = i + 1;
-                        for (int s = cellStart[bucket], end = cellStart[bucket + 1]; s < end; s++) {
-                            final int j = sorted[s];
-                            final double mj = reachOf[j];
-                            if (j == i || mj > mi || (mj == mi && j < i)) continue;
-                            final double ex = xi - sx[3 * s], ey = yi - sx[3 * s + 1], ez = zi - sx[3 * s + 2], d2 = ex * ex + ey * ey + ez * ez;
-                            final double reach = base + mi + mj;
-                            if (d2 >= reach * reach || w[i] + w[j] == 0) continue;
-                            final int m = 3 * j;
-                            final double rx = rest[k] - rest[m], ry = rest[k + 1] - rest[m + 1], rz = rest[k + 2] - rest[m + 2];
-                            if (rx * rx + ry * ry + rz * rz < neighbours) continue; // neighbours at rest
-                            out.add(Math.min(i, j), Math.max(i, j));
-                        }
+                        scan(out, i, cellStart[bucket], cellStart[bucket + 1], mi, w, neighbours);
                     }
+        }
+    }
+
+    /**
+     * Particle i against the hash's particles sorted[from .. to): each pair it is the one to find (the
+     * faster, or the higher index when as fast), within reach now and not neighbours at rest, into out.
+     */
+    private void scan(Finds out, int i, int from, int to, double mi, double[] w, double neighbours) {
+        final double[] sx = sortedX, x = buildParticles.x;
+        final int k = 3 * i;
+        final double xi = x[k], yi = x[k + 1], zi = x[k + 2], base = buildBase;
+        for (int s = from; s < to; s++) {
+            final int j = sorted[s];
+            final double mj = reachOf[j];
+            if (j == i || mj > mi || (mj == mi && j < i)) continue;
+            final double ex = xi - sx[3 * s], ey = yi - sx[3 * s + 1], ez = zi - sx[3 * s + 2], d2 = ex * ex + ey * ey + ez * ez;
+            final double reach = base + mi + mj;
+            if (d2 >= reach * reach || w[i] + w[j] == 0) continue;
+            final int m = 3 * j;
+            final double rx = rest[k] - rest[m], ry = rest[k + 1] - rest[m + 1], rz = rest[k + 2] - rest[m + 2];
+            if (rx * rx + ry * ry + rz * rz < neighbours) continue; // neighbours at rest
+            out.add(Math.min(i, j), Math.max(i, j));
         }
     }
 

@@ -80,7 +80,7 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
      * particle is linear in the positions: −Σ_u B_vu x_u with B = Σ_h k_h c_h c_hᵀ, per axis (each row of a
      * hinge has its own k). B's row of v lists the particles v shares a hinge with (itself included):
      * bendStart[v] .. bendStart[v + 1] into bendColumn and bendValue (x, y, z interleaved). Summed once per
-     * step, it costs a particle a few dozen products where evaluating its dozen hinges cost some three hundred.
+     * material change, it costs a particle a few dozen products where evaluating its dozen hinges cost some three hundred.
      */
     private final int[] bendStart, bendColumn, bendEntry;
     private final double[] bendValue;
@@ -220,6 +220,10 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
         triOf = incidences(triParticle, 3, triStart);
         hingeOf = incidences(hingeParticle, 4, hingeStart);
         springOf = incidences(springParticle, 2, springStart);
+        List<ConstraintBlock> sources = new ArrayList<>(membranes);
+        sources.addAll(hinges);
+        sources.addAll(springs);
+        stiffnessSources = sources.toArray(new ConstraintBlock[0]);
         triA = new double[triOf.length];
         triB = new double[triOf.length];
         for (int e = 0; e < triOf.length; e++) {
@@ -340,8 +344,18 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
 
     int colours() { return colourCount; }
 
+    /** The blocks whose compliances the stiffnesses come from, and the sum of their material versions last derived. */
+    private final ConstraintBlock[] stiffnessSources;
+    private long refreshedFor = -1;
 
-    /** Stiffnesses from the blocks' compliances (a fabric swap or a fit may have changed them since the last step). */
+    /** Sum of the sources' material versions: it moves whenever any of them changes (each only counts up). */
+    private long materialVersion() {
+        long sum = 0;
+        for (ConstraintBlock b : stiffnessSources) sum += b.materialVersion();
+        return sum;
+    }
+
+    /** Stiffnesses from the blocks' compliances (a fabric swap, a key or a fit may have changed them since the last step). */
     private void refreshStiffness() {
         for (int t = 0; t < triBlock.length; t++) {
             MembraneBlock m = triBlock[t];
@@ -367,7 +381,10 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
     }
 
     @Override public void solve(int substep, int iterations) {
-        if (substep == 0) refreshStiffness();
+        if (substep == 0) {
+            long version = materialVersion();
+            if (version != refreshedFor) { refreshStiffness(); refreshedFor = version; }
+        }
         final double h = ctx.h, h2 = h * h;
         final double[] x = particles.x, w = particles.w, f = particles.force, y = target;
         final double gx = settings.gravityX(), gy = settings.gravityY(), gz = settings.gravityZ();

@@ -53,7 +53,7 @@ final class SolverChoice implements Experiment {
         }
         double ms = (System.nanoTime() - t0) / 1e6 / 200;
         double middle = 0.5 * (p.y(cloth.index(0, (n - 1) / 2)) + p.y(cloth.index(0, n / 2)));
-        double[] out = {p.y(cloth.index(0, 0)) - middle, MeshIndependence.largestStrain(sim), sim.balance(), ms};
+        double[] out = {p.y(cloth.index(0, 0)) - middle, xpbdcloth.engine.Metrics.largestGreenStrain(sim), sim.balance(), ms};
         sim.close();
         return out;
     }

@@ -19,7 +19,7 @@ import xpbdcloth.scene.Scene;
 public final class Trajectory {
     /**
      * The most frames a trajectory may have, read or written: a fit keeps every frame's state as a
-     * checkpoint and replays each frame per gradient, so ten thousand steps (200 s at 20 ms) is already
+     * checkpoint and replays each frame per gradient, so ten thousand steps (minutes of motion) is already
      * hours of fitting; more is a mistake, not a motion.
      */
     public static final int MAX_FRAMES = 10_000;

@@ -53,6 +53,11 @@ public final class ObjReader {
     private ObjReader() {}
 
     public static ClothMesh read(Path path, double weldTolerance) {
+        return parse(path.toString(), text(path), weldTolerance);
+    }
+
+    /** A file's text, guarded: a regular file (a link that leads nowhere said so), at most {@link #MAX_FILE_BYTES}, UTF-8. */
+    static String text(Path path) {
         String file = path.toString();
         if (!Files.isRegularFile(path)) {
             String why = Files.exists(path) ? "is not a regular file"
@@ -63,7 +68,7 @@ public final class ObjReader {
             long size = Files.size(path);
             if (size > MAX_FILE_BYTES)
                 throw new MeshFileException(file, 0, "is " + size + " bytes, more than the " + MAX_FILE_BYTES + " an OBJ cloth may have (a cloth has 262144 vertices at most)");
-            return parse(file, utf8(file, Files.readAllBytes(path)), weldTolerance);
+            return utf8(file, Files.readAllBytes(path));
         } catch (IOException e) {
             throw new MeshFileException(file, 0, "cannot be read: " + e.getMessage());
         }
@@ -75,16 +80,7 @@ public final class ObjReader {
      * and the faces are the scene's). The same limits on the file, its text and its numbers as {@link #read}.
      */
     public static double[] vertices(Path path) {
-        String file = path.toString();
-        if (!Files.isRegularFile(path)) throw new MeshFileException(file, 0, Files.exists(path) ? "is not a regular file" : "does not exist");
-        String text;
-        try {
-            long size = Files.size(path);
-            if (size > MAX_FILE_BYTES) throw new MeshFileException(file, 0, "is " + size + " bytes, more than the " + MAX_FILE_BYTES + " an OBJ may have");
-            text = utf8(file, Files.readAllBytes(path));
-        } catch (IOException e) {
-            throw new MeshFileException(file, 0, "cannot be read: " + e.getMessage());
-        }
+        String file = path.toString(), text = text(path);
         Parse parse = new Parse(file, 0);
         String[] lines = text.split("\r\n|\n|\r", -1);
         double[] out = new double[3 * 64];
@@ -94,9 +90,7 @@ public final class ObjReader {
             if (!line.startsWith("v ") && !line.startsWith("v\t")) continue;
             int hash = line.indexOf('#');
             String[] tok = (hash >= 0 ? line.substring(0, hash) : line).trim().split("\\s+");
-            if (n == MAX_VERTICES) throw parse.fail(ln, "more than " + MAX_VERTICES + " vertices: too many for a cloth");
-            if (tok.length < 4) throw parse.fail(ln, "a vertex needs x y z, was " + (tok.length - 1) + " numbers");
-            double[] p = parse.coordinates(ln, tok, "vertex coordinate ", "xyz");
+            double[] p = parse.position(ln, tok, n);
             if (3 * n + 3 > out.length) out = Arrays.copyOf(out, 2 * out.length);
             System.arraycopy(p, 0, out, 3 * n, 3);
             n++;
@@ -205,13 +199,19 @@ public final class ObjReader {
         }
 
         void vertex(int ln, String[] tok) {
+            double[] p = position(ln, tok, vertices.size());
+            vertices.add(p);
+            weldedOf.add(weld(p));
+        }
+
+        /** The position a {@code v} statement gives, checked (the file's {@code count + 1}th vertex). */
+        double[] position(int ln, String[] tok, int count) {
+            if (count == MAX_VERTICES) throw fail(ln, "more than " + MAX_VERTICES + " vertices: too many for a cloth");
             if (tok.length < 4) throw fail(ln, "a vertex needs x y z, was " + (tok.length - 1) + " numbers");
-            if (vertices.size() == MAX_VERTICES) throw fail(ln, "more than " + MAX_VERTICES + " vertices: too many for a cloth");
             double[] p = coordinates(ln, tok, "vertex coordinate ", "xyz");
             for (int d = 0; d < 3; d++)
                 if (Math.abs(p[d]) > MAX_COORDINATE) throw fail(ln, "vertex coordinate " + "xyz".charAt(d) + " must be within ±" + MAX_COORDINATE + ", was " + shown(tok[d + 1]));
-            vertices.add(p);
-            weldedOf.add(weld(p));
+            return p;
         }
 
         /** vt u [v [w]]: a missing v is 0 (a 1-D texture), w is read past. */

@@ -34,7 +34,7 @@ final class Mp4Video {
     /**
      * Writes the recording's first {@code count} frames to its MP4 file; returns the frames used. A frame is
      * {@code frameSeconds} of simulated time (1/60 s where dt divides it, one step where dt is longer), so
-     * the video's rate is 1/frameSeconds over the stride and plays in real time: 50 and 25 fps for a 20 ms step.
+     * the video's rate is 1/frameSeconds over the stride, so it plays in real time whatever the scene's timestep.
      */
     static int write(ClothApp.Recording recording, int count, double frameSeconds) throws IOException {
         int stride = 60 / recording.fps;

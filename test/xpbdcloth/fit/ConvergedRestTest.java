@@ -10,7 +10,7 @@ import xpbdcloth.engine.ClothBuilder;
 import xpbdcloth.engine.ConstraintBlock;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.ConstraintMode;
-import xpbdcloth.engine.MembraneBlock;
+import xpbdcloth.engine.Metrics;
 import xpbdcloth.engine.Particles;
 import xpbdcloth.engine.Simulation;
 import xpbdcloth.engine.SolverSettings;
@@ -47,7 +47,7 @@ class ConvergedRestTest {
             sim.add(b);
         for (int s = 0; s < 400; s++) sim.step();
         Particles p = sim.particles();
-        double sag = sag(p, cloth, n), strain = largestStrain(sim);
+        double sag = sag(p, cloth, n), strain = Metrics.largestGreenStrain(sim);
 
         ClothEnergy energy = new ClothEnergy(sim, List.of());
         double weight = 0;
@@ -60,7 +60,7 @@ class ConvergedRestTest {
         assertTrue(residual < 1e-3 * weight, "vertex block descent's rest off balance by " + residual + " N against the heaviest weight " + weight + " N");
         assertTrue(eq.forceResidual < 1e-4 * weight, "Newton's force residual " + eq.forceResidual + " N against the heaviest weight " + weight + " N");
         for (int i = 0; i < p.count(); i++) if (!p.isPinned(i)) p.setPosition(i, eq.positions[3 * i], eq.positions[3 * i + 1], eq.positions[3 * i + 2]);
-        double newtonSag = sag(p, cloth, n), newtonStrain = largestStrain(sim);
+        double newtonSag = sag(p, cloth, n), newtonStrain = Metrics.largestGreenStrain(sim);
         assertEquals(newtonSag, sag, tolerance * newtonSag, "sag of the top edge, vertex block descent vs Newton");
         assertEquals(newtonStrain, strain, 2 * tolerance * newtonStrain, "largest Green strain, vertex block descent vs Newton");
     }
@@ -69,14 +69,4 @@ class ConvergedRestTest {
         return p.y(cloth.index(0, 0)) - 0.5 * (p.y(cloth.index(0, (n - 1) / 2)) + p.y(cloth.index(0, n / 2)));
     }
 
-    static double largestStrain(Simulation sim) {
-        double m = 0;
-        for (ConstraintBlock b : sim.blocks())
-            if (b instanceof MembraneBlock)
-                for (int t = 0; t < ((MembraneBlock) b).triangleCount(); t++) {
-                    double[] e = ((MembraneBlock) b).strain(t, sim.particles());
-                    m = Math.max(m, Math.max(e[0], e[1]));
-                }
-        return m;
-    }
 }
