@@ -13,7 +13,7 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
 /**
- * The layering is one-way: tools, library → sketch → fit/experiments → scene → fabric → engine → mesh. The engine (and its tests)
+ * The layering is one-way: tools, library → sketch → fit/experiments → usd → scene → fabric → engine → mesh. The engine (and its tests)
  * imports nothing of the layers above it nor of Processing; the fabric package nothing above it; the scene package nothing of the sketch,
  * the tools or the experiments. Read from the source text, so a wrong import fails here by name.
  */
@@ -58,6 +58,15 @@ class LayeringTest {
     void sceneImportsNoSketchToolsOrExperiments() throws IOException {
         String[] above = {"xpbdcloth.fit", "xpbdcloth.sketch", "xpbdcloth.experiments", "xpbdcloth.tools", "processing."};
         assertEquals(List.of(), violations(Path.of("src/xpbdcloth/scene"), above));
+    }
+
+    /** USD files are written from scenes and read for fitting and the sketch: the exchange format knows neither. */
+    @Test
+    void usdSitsOnScenesAndNothingBelowKnowsIt() throws IOException {
+        String[] above = {"xpbdcloth.fit", "xpbdcloth.sketch", "xpbdcloth.experiments", "xpbdcloth.tools", "xpbdcloth.library", "processing."};
+        assertEquals(List.of(), violations(Path.of("src/xpbdcloth/usd"), above));
+        for (String below : new String[] {"scene", "fabric", "engine", "mesh"})
+            assertEquals(List.of(), violations(Path.of("src/xpbdcloth/" + below), "xpbdcloth.usd"));
     }
 
     /** Fitting sits on scenes and the engine; the sketch and the command line use it, never the reverse. */

@@ -95,4 +95,11 @@ public final class Sphere extends Collider {
     public double omegaY() { return omegaY; }
     public double omegaZ() { return omegaZ; }
     public double spinAngle() { return spinAngle; }
+
+    /** The sphere's turn so far (its spin angle about ω), row-major, into out[0..8]: identity when it does not spin. */
+    public void rotation(double[] out) {
+        double w = Math.sqrt(omegaX * omegaX + omegaY * omegaY + omegaZ * omegaZ);
+        if (w == 0) { java.util.Arrays.fill(out, 0, 9, 0); out[0] = out[4] = out[8] = 1; return; }
+        Rotation.axisAngle(omegaX / w, omegaY / w, omegaZ / w, spinAngle, out);
+    }
 }

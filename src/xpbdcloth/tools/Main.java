@@ -152,9 +152,15 @@ public final class Main implements Callable<Integer> {
         @Option(names = "--obj", description = "instead of PNG frames, write the cloth as one OBJ per frame (frame-0001.obj, ...) into this folder; headless, no display needed")
         File obj;
 
+        @Option(names = "--usd", description = "instead of PNG frames, write the scene as one USD stage (text, .usda): the cloth's mesh with its points per frame, "
+                + "the colliders with their poses; the same frame rates as --obj; headless, no display needed")
+        File usd;
+
         @Override public Integer call() throws java.io.IOException {
             if (frames < 1) throw new IllegalArgumentException("frames must be >= 1, was " + frames);
+            if (obj != null && usd != null) throw new IllegalArgumentException("--obj and --usd each write the whole recording; give one");
             if (obj != null) return recordObj();
+            if (usd != null) return recordUsd();
             PresetLoader.byNameOrPath(sketch.scene); // a broken preset or size fails before anything is said or written
             parseSize(sketch.size);
             String name = new File(sketch.scene).getName().replace(".json", "");
@@ -169,10 +175,29 @@ public final class Main implements Callable<Integer> {
             return 0;
         }
 
+        private int recordUsd() throws java.io.IOException {
+            refuseImagesAndTwoCloths("--usd");
+            xpbdcloth.scene.Preset preset = PresetLoader.byNameOrPath(sketch.scene);
+            double dt = preset.solver.dt;
+            int steps = fps == null ? xpbdcloth.scene.ObjExport.stepsPerFrame(dt) : xpbdcloth.scene.ObjExport.stepsPerFrame(dt, fps);
+            double rate = 1 / (steps * dt);
+            System.out.printf(java.util.Locale.ROOT, "recording %d frames of %s into %s: %.6g frames per second of simulated time (a frame every %d step%s of %.4g ms)%n",
+                    frames, sketch.scene, usd, rate, steps, steps == 1 ? "" : "s", 1000 * dt);
+            long t0 = System.nanoTime();
+            int n = xpbdcloth.usd.UsdRecording.record(preset, frames, usd.toPath(), steps);
+            System.out.printf(java.util.Locale.ROOT, "wrote %s: %d time codes (0 is the start), %.1f MB, in %.1f s%n",
+                    usd, n, java.nio.file.Files.size(usd.toPath()) / 1e6, (System.nanoTime() - t0) / 1e9);
+            return 0;
+        }
+
+        private void refuseImagesAndTwoCloths(String option) {
+            if (sketch.sideBySide) throw new IllegalArgumentException(option + " records one cloth; drop --side-by-side (it shows two)");
+            if (gif != null) throw new IllegalArgumentException(option + " writes meshes, not images; drop --gif");
+            if (mp4 != null) throw new IllegalArgumentException(option + " writes meshes, not images; drop --mp4");
+        }
+
         private int recordObj() throws java.io.IOException {
-            if (sketch.sideBySide) throw new IllegalArgumentException("--obj records one cloth; drop --side-by-side (it shows two)");
-            if (gif != null) throw new IllegalArgumentException("--obj writes meshes, not images; drop --gif");
-            if (mp4 != null) throw new IllegalArgumentException("--obj writes meshes, not images; drop --mp4");
+            refuseImagesAndTwoCloths("--obj");
             xpbdcloth.scene.Preset preset = PresetLoader.byNameOrPath(sketch.scene);
             double dt = preset.solver.dt;
             int steps = fps == null ? xpbdcloth.scene.ObjExport.stepsPerFrame(dt) : xpbdcloth.scene.ObjExport.stepsPerFrame(dt, fps);
