@@ -10,11 +10,14 @@ import java.util.stream.Stream;
 import xpbdcloth.engine.Simulation;
 import xpbdcloth.scene.ObjExport;
 import xpbdcloth.scene.Scene;
+import xpbdcloth.usd.UsdMeshAnimation;
 
 /**
  * An observed motion: a folder of OBJ files, one per step of the scene's dt, read in name order, the
  * first the cloth after one step from the scene's start (the format other tools export a mesh sequence
- * in; each file is checked as an {@link Observation} is).
+ * in; each file is checked as an {@link Observation} is); or one USD text file (.usda, as
+ * {@code record --usd --fps 1/dt} writes it) whose animated mesh has a time code per step, code k the
+ * cloth after k steps.
  */
 public final class Trajectory {
     /**
@@ -26,8 +29,14 @@ public final class Trajectory {
 
     private Trajectory() {}
 
-    /** The frames in a folder, [frame][3·vertex + axis], or a {@link FitException} naming the file that is not a frame of this scene. */
+    /** Whether the path is a trajectory in one USD file rather than a folder of OBJs. */
+    public static boolean isUsd(Path path) {
+        return path.getFileName() != null && path.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".usda");
+    }
+
+    /** The frames in a folder (or a .usda file), [frame][3·vertex + axis], or a {@link FitException} naming the file that is not a frame of this scene. */
     public static double[][] read(Path folder, Scene scene) {
+        if (isUsd(folder)) return readUsd(folder, scene);
         List<Path> files;
         try (Stream<Path> s = Files.list(folder)) {
             files = s.filter(p -> p.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".obj")).sorted().toList();
@@ -41,6 +50,47 @@ public final class Trajectory {
         double[][] frames = new double[files.size()][];
         for (int f = 0; f < frames.length; f++) frames[f] = Observation.read(files.get(f), scene);
         return frames;
+    }
+
+    /**
+     * The animated mesh of a .usda file as a trajectory of the scene: its vertices the scene's, in order (its
+     * faces, when it has the scene's count of them, the scene's faces), one time code per step of dt
+     * (timeCodesPerSecond = 1/dt), codes 1, 2, … N consecutive (a code 0, the start, is the scene's own start
+     * and not read).
+     */
+    static double[][] readUsd(Path file, Scene scene) {
+        UsdMeshAnimation m;
+        try {
+            m = UsdMeshAnimation.read(file, null);
+        } catch (IllegalArgumentException e) {
+            throw new FitException(e.getMessage());
+        }
+        int n = scene.cloth().particles().count();
+        if (m.vertexCount() != n)
+            throw new FitException(file + ": " + m.prim + " has " + m.vertexCount() + " points, the scene " + scene.preset().name + " has " + n + " particles");
+        xpbdcloth.mesh.ClothMesh mesh = scene.cloth().mesh();
+        int corner = 0;
+        boolean same = m.faceVertexCounts.length == mesh.faceCount();
+        for (int k = 0; same && k < mesh.faceCount(); k++) {
+            int[] f = mesh.face(k);
+            same = m.faceVertexCounts[k] == f.length;
+            for (int j = 0; same && j < f.length; j++) same = m.faceVertexIndices[corner++] == f[j];
+        }
+        if (!same) throw new FitException(file + ": the faces of " + m.prim + " are not the scene's: its points must be the scene's vertices in the scene's order");
+        double dt = scene.simulation().settings().timestep();
+        if (Math.abs(m.timeCodesPerSecond * dt - 1) > 1e-9)
+            throw new FitException(String.format(Locale.ROOT, "%s: timeCodesPerSecond is %s, but a trajectory has a time code per step of the scene's dt %s s (%s a second): record it with --fps %s",
+                    file, m.timeCodesPerSecond, dt, 1 / dt, 1 / dt));
+        int first = m.timeCodes[0] == 0 ? 1 : 0, frames = m.timeCodes.length - first;
+        if (frames < 1) throw new FitException(file + ": " + m.prim + " has no frames after the start (time code 0)");
+        if (frames > MAX_FRAMES) throw new FitException(file + " holds " + frames + " frames, more than the " + MAX_FRAMES + " a trajectory may have");
+        double[][] out = new double[frames][];
+        for (int f = 0; f < frames; f++) {
+            if (m.timeCodes[first + f] != f + 1)
+                throw new FitException(file + ": the time codes of " + m.prim + " must be 1, 2, 3, … one per step; the " + (f + 1) + "th is " + m.timeCodes[first + f]);
+            out[f] = m.points[first + f];
+        }
+        return out;
     }
 
     /** The scene's first {@code frames} steps as the engine runs them, each with Gaussian noise sigma (m) from seed. */

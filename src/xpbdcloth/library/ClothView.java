@@ -84,8 +84,12 @@ public final class ClothView {
         app.registerMethod("pre", this);
         app.registerMethod("keyEvent", this);
         app.registerMethod("mouseEvent", this);
+        app.registerMethod("dispose", this);
         lastNanos = System.nanoTime();
     }
+
+    /** Called by Processing when the sketch closes: a USD recording that runs is ended and its file written. */
+    public void dispose() { state.stopUsd(); }
 
     /** A built-in name as it is; a relative file name from the sketch's data folder, else its folder. */
     private static String resolve(PApplet app, String nameOrPath) {
@@ -103,6 +107,8 @@ public final class ClothView {
         double frameSeconds = Math.min(0.25, (now - lastNanos) / 1e9);
         lastNanos = now;
         state.advanceFit();
+        if (state.takeUsdRequest()) // the R key
+            state.toggleUsd(java.nio.file.Path.of(app.sketchPath(state.usdFileName())));
         if (!autoStep) return;
         if (state.paused()) {
             pacer.reset();
@@ -118,6 +124,23 @@ public final class ClothView {
 
     /** Advances every running cloth by one step of dt (for sketches that step themselves: see {@link #autoStep}). */
     public void step() { state.advance(); }
+
+    /**
+     * Records the running cloth and its colliders as one USD stage (text, .usda) from now on, a frame per
+     * 1/60 s of simulated time (or per step when dt is longer), until {@link #stopUsd()} or the sketch closes;
+     * relative paths are in the sketch's folder. Blender, Houdini and usdview open the file.
+     */
+    public ClothView recordUsd(String file) {
+        state.stopUsd();
+        state.toggleUsd(java.nio.file.Path.of(new File(file).isAbsolute() ? file : app.sketchPath(file)));
+        return this;
+    }
+
+    /** Ends the USD recording and writes its file (nothing when none runs). */
+    public ClothView stopUsd() {
+        state.stopUsd();
+        return this;
+    }
 
     /** Whether {@code pre()} steps in real time (default) or only {@link #step()} does. */
     public ClothView autoStep(boolean on) { autoStep = on; return this; }

@@ -91,8 +91,12 @@ public final class ClothApp {
         app.registerMethod("draw", this);
         app.registerMethod("keyEvent", this);
         app.registerMethod("mouseEvent", this);
+        app.registerMethod("dispose", this);
         lastNanos = System.nanoTime();
     }
+
+    /** Called by Processing when the window closes: a USD recording that runs is ended and its file written. */
+    public void dispose() { state.stopUsd(); }
 
     public SketchState state() { return state; }
 
@@ -187,6 +191,7 @@ public final class ClothApp {
             hud.clear();
         }
         if (state.quitRequested) {
+            state.stopUsd();
             app.exit();
             return;
         }
@@ -194,6 +199,8 @@ public final class ClothApp {
             state.exportRequested = false;
             exportMeshes();
         }
+        if (state.takeUsdRequest())
+            state.toggleUsd(new File(app.sketchPath(state.usdFileName())).toPath());
         if (state.fitRequested) {
             state.fitRequested = false;
             if (!choosing) {

@@ -108,6 +108,7 @@ final class Hud {
                         + (fabric != null ? "   (strain: the membrane's largest principal stretch)"
                                 : fmt("   max link force %.3f N%s", Metrics.maxForce(sim, ConstraintFamily.STRUCTURAL), s.sideBySide() ? " (PBD)" : "")),
                 (s.windOn() ? fmt("wind %.1f m/s towards %.0f°", s.windSpeed(), Math.toDegrees(s.windAngle())) : "wind off")
+                        + (s.recordingUsd() ? fmt("   USD recording: %d frames (R ends it)", s.usdFrames()) : "")
                         + (sim.selfCollision() == null ? "   self-collision off" : fmt("   self-collision %.1f mm, %d pairs near", 1000 * sim.selfCollision().thickness(), sim.selfCollision().pairCount())),
                 s.showHelp ? "h: hide the keys" : "h: keys   q: quit",
         };

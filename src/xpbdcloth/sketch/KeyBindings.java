@@ -63,6 +63,7 @@ public final class KeyBindings {
         b.add(new KeyBinding('l', "load a preset file (a broken one keeps this scene)", s -> s.loadRequested = true, s -> s.loadRequested));
         b.add(new KeyBinding('p', "fit: load an observed rest shape (OBJ) and fit the compliances to it live", s -> s.fitRequested = true, s -> s.fitRequested));
         b.add(new KeyBinding('O', "write the cloth's current shape as an OBJ file", s -> s.exportRequested = true, s -> s.exportRequested));
+        b.add(new KeyBinding('R', "record the scene as USD (.usda) / stop and write the file", s -> s.usdRequested = true, s -> s.usdRequested));
         b.add(new KeyBinding(' ', "pause / run", SketchState::togglePause, s -> s.paused));
         b.add(new KeyBinding('n', "single step (pauses)", SketchState::requestStep, s -> s.pendingSteps));
         b.add(new KeyBinding('w', "wind on/off", SketchState::toggleWind, SketchState::windOn));

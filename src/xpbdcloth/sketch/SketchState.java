@@ -61,7 +61,9 @@ public final class SketchState {
     private double windAngle, windSpeed;
 
     // View toggles.
-    boolean paused, wireframe, showParticles, showSpheres = true, showGrid = true, showHelp, loadRequested, exportRequested, quitRequested, fitRequested;
+    boolean paused, wireframe, showParticles, showSpheres = true, showGrid = true, showHelp, loadRequested, exportRequested, quitRequested, fitRequested, usdRequested;
+    /** The USD recording of the running scene, while one runs. */
+    private final UsdCapture usd = new UsdCapture();
     /** The fit the p key started, or null. */
     private LiveFit fit;
     int pendingSteps;
@@ -443,7 +445,65 @@ public final class SketchState {
             return false;
         }
         warnIfTearing();
+        try {
+            String ended = usd.afterStep(running().get(0));
+            if (ended != null) say(ended);
+        } catch (java.io.IOException | RuntimeException e) {
+            usdFailed(e);
+        }
         return true;
+    }
+
+    /** Whether the R key asked for a USD recording to start or stop since the last call (and clears the request). */
+    public boolean takeUsdRequest() {
+        boolean asked = usdRequested;
+        usdRequested = false;
+        return asked;
+    }
+
+    /** The name a USD recording of the running scene gets: the preset and the simulated time it starts at. */
+    public String usdFileName() {
+        return String.format(java.util.Locale.ROOT, "xpbd-cloth-%s-t%.2f.usda", preset().name, first().time());
+    }
+
+    /** Whether a USD recording runs, and its frames so far. */
+    public boolean recordingUsd() { return usd.on(); }
+    public int usdFrames() { return usd.frames(); }
+
+    /**
+     * Starts recording the running scene (the left one side by side) as USD into file, or, when one runs,
+     * ends it and writes the file. Says which; a file that cannot be written is a red notice, the scene runs on.
+     */
+    public void toggleUsd(java.nio.file.Path file) {
+        try {
+            if (usd.on()) {
+                say(usd.stop(null));
+            } else {
+                usd.start(file, running().get(0));
+                say("recording USD into " + file + " (R again ends it and writes the file)");
+            }
+        } catch (java.io.IOException | RuntimeException e) {
+            usdFailed(e);
+        }
+    }
+
+    /** Ends a USD recording that runs (the sketch closing), writing its file. */
+    public void stopUsd() {
+        try {
+            String m = usd.stop("the sketch closed");
+            if (m != null) say(m);
+        } catch (java.io.IOException | RuntimeException e) {
+            usdFailed(e);
+        }
+    }
+
+    private void usdFailed(Exception e) {
+        error("USD recording stopped: " + e.getMessage());
+        try {
+            usd.stop(null);
+        } catch (java.io.IOException | RuntimeException again) {
+            // the first failure is the one to say
+        }
     }
 
     /** Above this structural strain the cloth is no longer cloth: the solver cannot hold it at these settings. */

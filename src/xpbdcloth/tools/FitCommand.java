@@ -46,7 +46,7 @@ final class FitCommand implements Callable<Integer> {
     @Option(names = "--scene", description = "built-in scene or preset file", defaultValue = "drape")
     String scene;
 
-    @Option(names = "--observed", description = "the observed shape, an OBJ with the scene's vertices in the scene's order; or a folder of such OBJs, one per step (a trajectory)")
+    @Option(names = "--observed", description = "the observed shape, an OBJ with the scene's vertices in the scene's order; or a folder of such OBJs, one per step (a trajectory), or a trajectory as one USD file (.usda, recorded with --fps 1/dt)")
     File observed;
 
     @Option(names = "--params", split = ",", description = "what to fit, of structural, shear, bend, membrane, dihedral (a fabric's moduli) and (for a trajectory) damping (default: the families the scene has, and its damping if it has one and a trajectory is fitted)")
@@ -98,7 +98,7 @@ final class FitCommand implements Callable<Integer> {
             throw new IllegalArgumentException("frames is for --make-observation (a fit takes as many frames as the folder holds), was " + frames);
         Scene sc = Scene.of(preset);
         if (makeObservation != null) return frames > 0 ? makeTrajectory(sc) : makeObservation(sc);
-        boolean dynamic = Files.isDirectory(observed.toPath());
+        boolean dynamic = Files.isDirectory(observed.toPath()) || Trajectory.isUsd(observed.toPath());
         boolean fitsDamping = fitsDamping(preset, dynamic);
         List<ConstraintFamily> families = families(preset, present(sc), dynamic);
         if (families.isEmpty() && !fitsDamping) throw new IllegalArgumentException("params must name at least one of " + FITTABLE_NAMES + (dynamic ? ", damping" : "") + ", was empty");

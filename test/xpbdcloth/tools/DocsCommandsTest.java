@@ -169,7 +169,7 @@ class DocsCommandsTest {
         }
         if (first.equals("scripts/deps")) {
             if (!Files.isExecutable(Path.of(first))) return first + " is not an executable file";
-            for (String a : t.subList(1, t.size())) if (!a.equals("--headless")) return "scripts/deps takes only --headless, was " + a;
+            for (String a : t.subList(1, t.size())) if (!a.equals("--headless") && !a.equals("--blender")) return "scripts/deps takes only --headless or --blender, was " + a;
             return null;
         }
         return "does not start with a command the docs may show";
@@ -228,7 +228,7 @@ class DocsCommandsTest {
             String scene = leaf.matchedOptionValue("--scene", "");
             if (!PresetLoader.BUILT_IN.contains(scene) && !Files.exists(Path.of(scene))) return "--scene " + scene + " is neither a built-in scene nor a file";
         }
-        for (String option : new String[] {"--make-observation", "--out", "--obj", "--gif", "--mp4"})
+        for (String option : new String[] {"--make-observation", "--out", "--obj", "--usd", "--gif", "--mp4"})
             if (leaf.hasMatchedOption(option)) OUTPUTS.add(normal(leaf.matchedOptionValue(option, new java.io.File("")).toString()));
         if (leaf.hasMatchedOption("--observed")) {
             String observed = normal(leaf.matchedOptionValue("--observed", new java.io.File("")).toString());
