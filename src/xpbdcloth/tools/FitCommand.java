@@ -58,7 +58,7 @@ final class FitCommand implements Callable<Integer> {
     @Option(names = "--seed", description = "seed of the noise", defaultValue = "1")
     long seed;
 
-    @Option(names = "--make-observation", description = "write the scene's rest shape to this OBJ instead of fitting (with --frames: its first steps into this folder)")
+    @Option(names = "--make-observation", description = "write the scene's rest shape to this OBJ instead of fitting (with --frames: its first steps into this folder, or into this .usda file)")
     File makeObservation;
 
     @Option(names = "--frames", description = "with --make-observation: write this many steps of the scene's motion (a trajectory) instead of its rest", defaultValue = "0")
@@ -148,6 +148,18 @@ final class FitCommand implements Callable<Integer> {
 
     private int makeTrajectory(Scene sc) throws Exception {
         Path folder = makeObservation.toPath();
+        if (Trajectory.isUsd(folder)) {
+            double dt = sc.simulation().settings().timestep();
+            try (xpbdcloth.usd.UsdRecording r = xpbdcloth.usd.UsdRecording.start(folder, sc, 1 / dt)) {
+                for (int f = 0; f < frames; f++) {
+                    sc.simulation().step();
+                    r.frame(Observation.withNoise(sc.simulation().particles().positions(), noiseMm * 1e-3, seed + f));
+                }
+            }
+            out.printf(Locale.ROOT, "wrote %s: %d frames (%.2f s of %s from its start, a time code per step of %.4f s), noise %.3f mm%n",
+                    folder, frames, frames * dt, sc.preset().name, dt, noiseMm);
+            return 0;
+        }
         List<Path> files = Trajectory.simulateInto(folder, sc, frames, noiseMm * 1e-3, seed, String.format(Locale.ROOT,
                 "xpbd-cloth fit --make-observation: %s, noise %.3f mm, seed %d", sc.preset().name, noiseMm, seed));
         out.printf(Locale.ROOT, "wrote %d frames (%.2f s of %s from its start, one per step of %.4f s) to %s, noise %.3f mm%n",

@@ -45,8 +45,8 @@ import xpbdcloth.scene.Scene;
  */
 public final class UsdRecording implements Closeable {
     /**
-     * The most frames a recording may have: ten minutes at 60 fps. A 64² cloth takes about 0.5 MB a frame,
-     * so this is already some 18 GB; more is a mistake, not a recording.
+     * The most frames a recording may have: ten minutes at 60 fps. A 64² cloth takes about 0.3 MB a frame,
+     * so this is already some 11 GB; more is a mistake, not a recording.
      */
     public static final int MAX_FRAMES = 36_000;
 
@@ -128,11 +128,18 @@ public final class UsdRecording implements Closeable {
     }
 
     /** Adds the scene's state now as the next frame. */
-    public void frame() throws IOException {
+    public void frame() throws IOException { frame(scene.simulation().particles().positions()); }
+
+    /**
+     * Adds the next frame with the cloth at positions {@code x} (3 per particle; an observation with noise,
+     * say) and the colliders where they are now.
+     */
+    public void frame(double[] x) throws IOException {
         if (closed) throw new IllegalStateException("the recording of " + file + " is closed");
         if (frames >= MAX_FRAMES)
             throw new IllegalArgumentException("frames: a USD recording holds at most " + MAX_FRAMES + " frames (ten minutes at 60 fps), " + file + " has them");
-        double[] x = scene.simulation().particles().positions();
+        if (x.length != 3 * mesh.vertexCount())
+            throw new IllegalArgumentException("positions must be 3 per particle (" + 3 * mesh.vertexCount() + " numbers), was " + x.length);
         if (curves) {
             open(points);
             for (int s = 0; s < segments.length; s++) point(x, segments[s], s == 0);
