@@ -22,17 +22,19 @@ package xpbdcloth.engine;
  * nearby triangle's motion (both linear in the substep) with the cubic coplanarity test
  * ({@link TriangleGeometry#firstCoplanarTime}): a particle that crosses a triangle between two checks gets
  * a contact with that triangle on the side it came from, however thin the mesh and however fast either
- * moves. Each particle gets at most two contacts per mesh and substep: the first triangle it crossed, and
+ * moves. Each particle gets at most three contacts per mesh and substep: the first triangle it crossed;
  * the one nearest to where it started the substep among those within reach of its motion (margin +
- * {@link #REACH} around it): nearest at the start, not at the predicted end, which may already lie past a
- * thin solid, nearer its far side.
+ * {@link #REACH} around it), nearest at the start and not at the predicted end, which may already lie past
+ * a thin solid, nearer its far side; and, when it crossed nothing and another part of the body faces it
+ * from elsewhere (a crease: an arm against the side), the one nearest to its predicted end, so the sweeps
+ * hold it off both.
  *
  * <p>Candidates come from a {@link TriangleBvh} refitted each substep to the triangles' swept boxes.
  * Contacts are found and projected on one thread; nothing is allocated per step.
  */
 public final class MeshCollider extends RigidCollider {
     /** How far beyond the margin (m) a triangle is still a candidate: what the sweeps may push a particle in a substep. */
-    public static final double REACH = 0.02;
+    public static final double REACH = 0.01;
     /** Barycentric slack of the crossing test, so a crossing exactly through an edge is not missed between two triangles. */
     static final double EDGE_SLACK = 1e-9;
 
@@ -58,7 +60,13 @@ public final class MeshCollider extends RigidCollider {
     private double[] contactSide = new double[0], contactStartDepth = new double[0];
     private int contacts;
     private final int[] candidates = new int[512];
+    /** Scratch of the collide stage and of measurements (one thread). */
     private final double[] point = new double[6], scratch = new double[9];
+    /**
+     * Scratch of the projection, one per thread: vertex block descent projects the contacts of the particles
+     * of one colour on several threads at once (no allocation after a thread's first contact).
+     */
+    private final ThreadLocal<double[][]> projectionScratch = ThreadLocal.withInitial(() -> new double[][] {new double[6], new double[9]});
     private double queryX, queryY, queryZ;
     private final TriangleBvh.TriangleMetric toQuery = this::squaredDistanceToQuery;
 
@@ -280,19 +288,52 @@ public final class MeshCollider extends RigidCollider {
             double hx = Math.max(ax, bx) + reach, hy = Math.max(ay, by) + reach, hz = Math.max(az, bz) + reach;
             if (lx > rx1 || hx < rx0 || ly > ry1 || hy < ry0 || lz > rz1 || hz < rz0) continue;
             int found = bvh.overlapping(lx, ly, lz, hx, hy, hz, candidates);
-            double firstHit = 2, nearest = Double.MAX_VALUE;
-            int hit = -1, near = -1;
+            double firstHit = 2, nearest = Double.MAX_VALUE, nearestAhead = (margin + REACH) * (margin + REACH);
+            int hit = -1, near = -1, ahead = -1;
             for (int c = 0; c < found; c++) {
                 int t = candidates[c], a = triangles[3 * t], b = triangles[3 * t + 1], d = triangles[3 * t + 2];
-                double tau = TriangleGeometry.firstCoplanarTime(ax, ay, az, bx, by, bz, start, now, a, b, d, EDGE_SLACK, scratch);
-                if (tau >= 0 && tau < firstHit) { firstHit = tau; hit = t; }
+                if (mayCross(t, ax, ay, az, bx, by, bz)) {
+                    double tau = TriangleGeometry.firstCoplanarTime(ax, ay, az, bx, by, bz, start, now, a, b, d, EDGE_SLACK, scratch);
+                    if (tau >= 0 && tau < firstHit) { firstHit = tau; hit = t; }
+                }
                 TriangleGeometry.closestPoint(ax, ay, az, start, a, b, d, point);
                 double ex = ax - point[0], ey = ay - point[1], ez = az - point[2], d2 = ex * ex + ey * ey + ez * ez;
                 if (d2 < nearest) { nearest = d2; near = t; }
+                TriangleGeometry.closestPoint(bx, by, bz, now, a, b, d, point);
+                ex = bx - point[0]; ey = by - point[1]; ez = bz - point[2]; d2 = ex * ex + ey * ey + ez * ez;
+                if (d2 < nearestAhead) { nearestAhead = d2; ahead = t; }
             }
             if (hit >= 0) add(set, i, hit, ax, ay, az, true);
             if (near >= 0 && near != hit) add(set, i, near, ax, ay, az, false);
+            if (hit < 0 && ahead >= 0 && ahead != near && !sameSurface(ahead, near) && faces(ahead, ax, ay, az)) add(set, i, ahead, ax, ay, az, false);
         }
+    }
+
+    /**
+     * Whether the particle's motion a → b may cross triangle t's plane in the substep: always when the
+     * triangle moved; for a still one only when a and b lie on different sides of its plane (the motion is
+     * then linear in the plane's distance, so the cubic has no root otherwise).
+     */
+    private boolean mayCross(int t, double ax, double ay, double az, double bx, double by, double bz) {
+        int a = 3 * triangles[3 * t], b = 3 * triangles[3 * t + 1], c = 3 * triangles[3 * t + 2];
+        if (start[a] != now[a] || start[a + 1] != now[a + 1] || start[a + 2] != now[a + 2] || start[b] != now[b] || start[b + 1] != now[b + 1]
+                || start[b + 2] != now[b + 2] || start[c] != now[c] || start[c + 1] != now[c + 1] || start[c + 2] != now[c + 2]) return true;
+        double nx = faceNow[3 * t], ny = faceNow[3 * t + 1], nz = faceNow[3 * t + 2];
+        double da = (ax - now[a]) * nx + (ay - now[a + 1]) * ny + (az - now[a + 2]) * nz;
+        double db = (bx - now[a]) * nx + (by - now[a + 1]) * ny + (bz - now[a + 2]) * nz;
+        return (da <= 0) != (db <= 0) || da == 0 || db == 0;
+    }
+
+    /** Whether the point lies on the side triangle t's face points to (at the substep's start): the triangle faces it. */
+    private boolean faces(int t, double ax, double ay, double az) {
+        int a = 3 * triangles[3 * t];
+        return (ax - start[a]) * faceStart[3 * t] + (ay - start[a + 1]) * faceStart[3 * t + 1] + (az - start[a + 2]) * faceStart[3 * t + 2] > 0;
+    }
+
+    /** Whether triangles s and t face the same way (within about 25°): one surface, one contact is enough. */
+    private boolean sameSurface(int s, int t) {
+        if (t < 0) return false;
+        return faceNow[3 * s] * faceNow[3 * t] + faceNow[3 * s + 1] * faceNow[3 * t + 1] + faceNow[3 * s + 2] * faceNow[3 * t + 2] > 0.9;
     }
 
     /**
@@ -329,30 +370,48 @@ public final class MeshCollider extends RigidCollider {
         contacts++;
     }
 
-    /** C of contact j now, its normal into scratch[6..8], the closest point and its weights into point. */
-    private double constraint(Particles p, int j) {
+    /**
+     * C of contact j now, its normal into scratch[6..8], the closest point and its weights into point. On a
+     * closed mesh the particle is outside when (x − c) points the way of the pseudonormal of the feature c
+     * lies on; then n = (x − c)/|x − c| and C = |x − c| − m, else n = −(x − c)/|x − c| and C = −|x − c| − m:
+     * out through the nearest point, not along a face normal that, beside an edge, points elsewhere.
+     */
+    private double constraint(Particles p, int j, double[] point, double[] scratch) {
         int i = contactParticle[j], t = contactTriangle[j], k = 3 * i;
         double s = contactSide[j];
         double px = p.x[k], py = p.x[k + 1], pz = p.x[k + 2];
         int feature = TriangleGeometry.closestPoint(px, py, pz, now, triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2], point);
-        double fx = s * faceNow[3 * t], fy = s * faceNow[3 * t + 1], fz = s * faceNow[3 * t + 2];
-        double dx = px - point[0], dy = py - point[1], dz = pz - point[2];
-        double along = dx * fx + dy * fy + dz * fz, len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-        double dist;
-        if (feature == TriangleGeometry.FACE || !(along > 0) || len < 1e-12) {
-            scratch[6] = fx; scratch[7] = fy; scratch[8] = fz;
-            dist = along;
-        } else {
+        double dx = px - point[0], dy = py - point[1], dz = pz - point[2], len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        if (!closed) {
+            // An open sheet has no inside: on its face, or behind its plane, the particle is held to side s
+            // along the face normal; off an edge in front of it, away from the edge.
+            double fx = s * faceNow[3 * t], fy = s * faceNow[3 * t + 1], fz = s * faceNow[3 * t + 2];
+            double along = dx * fx + dy * fy + dz * fz;
+            if (feature == TriangleGeometry.FACE || !(along > 0) || len < 1e-12) {
+                scratch[6] = fx; scratch[7] = fy; scratch[8] = fz;
+                return along - margin;
+            }
             scratch[6] = dx / len; scratch[7] = dy / len; scratch[8] = dz / len;
-            dist = len;
+            return len - margin;
         }
-        return dist - margin;
+        pseudonormal(feature, t, triangles, edgeOf, faceNow, vertexNow, edgeNow, scratch);
+        double sx = s * scratch[6], sy = s * scratch[7], sz = s * scratch[8];
+        if (len < 1e-12) { // on the surface: out along the pseudonormal
+            double l = Math.sqrt(sx * sx + sy * sy + sz * sz);
+            scratch[6] = sx / l; scratch[7] = sy / l; scratch[8] = sz / l;
+            return -margin;
+        }
+        double sign = dx * sx + dy * sy + dz * sz >= 0 ? 1 : -1;
+        scratch[6] = sign * dx / len; scratch[7] = sign * dy / len; scratch[8] = sign * dz / len;
+        return sign * len - margin;
     }
 
     @Override void project(Particles p, int j, double h) {
         int i = contactParticle[j];
         if (p.w[i] == 0) return;
-        double c = constraint(p, j);
+        double[][] work = projectionScratch.get();
+        double[] point = work[0], scratch = work[1];
+        double c = constraint(p, j, point, scratch);
         if (c >= 0) return;
         double correction = -c - Collider.leftInside(contactStartDepth[j], h);
         if (correction <= 0) return;
@@ -370,22 +429,52 @@ public final class MeshCollider extends RigidCollider {
         CoulombFriction.apply(p, i, nx, ny, nz, correction, vx, vy, vz, h, staticFriction, kineticFriction);
     }
 
-    @Override double clearance(Particles p, int j) { return constraint(p, j); }
+    @Override double clearance(Particles p, int j) {
+        double[][] work = projectionScratch.get();
+        return constraint(p, j, work[0], work[1]);
+    }
 
     // ---- The shape, for the rest of the engine and for measurements ------------------------------------
 
     /**
-     * The distance from world point (x, y, z) to the mesh now, m: negative inside a closed mesh (by the
-     * pseudonormal of the nearest feature), never negative for an open one.
+     * The distance from world point (x, y, z) to the mesh now, m: negative inside a closed mesh, never
+     * negative for an open one. Inside is where the mesh's winding number is at least ½ (Jacobson et al.
+     * 2013, "Robust inside-outside segmentation using generalized winding numbers"): right also inside a
+     * body made of closed parts that overlap, where the nearest surface may be another part's, seen from
+     * outside it. A measurement (it visits every triangle), not the contact's own test.
      */
     public double signedDistance(double x, double y, double z) {
+        double d = distance(x, y, z);
+        return closed && windingNumber(x, y, z) >= 0.5 ? -d : d;
+    }
+
+    /** The unsigned distance from world point (x, y, z) to the mesh now, m. */
+    public double distance(double x, double y, double z) {
         queryX = x; queryY = y; queryZ = z;
         int t = bvh.nearest(x, y, z, Double.POSITIVE_INFINITY, toQuery);
-        int feature = TriangleGeometry.closestPoint(x, y, z, now, triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2], point);
-        double dx = x - point[0], dy = y - point[1], dz = z - point[2], d = Math.sqrt(dx * dx + dy * dy + dz * dz);
-        if (!closed) return d;
-        pseudonormal(feature, t, triangles, edgeOf, faceNow, vertexNow, edgeNow, scratch);
-        return dx * scratch[6] + dy * scratch[7] + dz * scratch[8] >= 0 ? d : -d;
+        TriangleGeometry.closestPoint(x, y, z, now, triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2], point);
+        double dx = x - point[0], dy = y - point[1], dz = z - point[2];
+        return Math.sqrt(dx * dx + dy * dy + dz * dz);
+    }
+
+    /**
+     * The winding number of the mesh now about world point p: the triangles' signed solid angles over 4π
+     * (each by Van Oosterom and Strackee 1983, "The solid angle of a plane triangle"). 1 inside a closed
+     * part, 0 outside every part, the number of parts that hold p where closed parts overlap.
+     */
+    public double windingNumber(double px, double py, double pz) {
+        double sum = 0;
+        for (int t = 0; t < triangleCount; t++) {
+            int a = 3 * triangles[3 * t], b = 3 * triangles[3 * t + 1], c = 3 * triangles[3 * t + 2];
+            double ax = now[a] - px, ay = now[a + 1] - py, az = now[a + 2] - pz;
+            double bx = now[b] - px, by = now[b + 1] - py, bz = now[b + 2] - pz;
+            double cx = now[c] - px, cy = now[c + 1] - py, cz = now[c + 2] - pz;
+            double la = Math.sqrt(ax * ax + ay * ay + az * az), lb = Math.sqrt(bx * bx + by * by + bz * bz), lc = Math.sqrt(cx * cx + cy * cy + cz * cz);
+            double det = ax * (by * cz - bz * cy) - ay * (bx * cz - bz * cx) + az * (bx * cy - by * cx);
+            double div = la * lb * lc + (ax * bx + ay * by + az * bz) * lc + (bx * cx + by * cy + bz * cz) * la + (cx * ax + cy * ay + cz * az) * lb;
+            sum += 2 * Math.atan2(det, div);
+        }
+        return sum / (4 * Math.PI);
     }
 
     private double squaredDistanceToQuery(int t) {

@@ -16,8 +16,11 @@ public abstract class RigidCollider extends Collider {
     double cx, cy, cz, vx, vy, vz, pcx, pcy, pcz;
     final double[] rotation = new double[9], previous = new double[9];
     private final double[] spin = new double[9], centre = new double[3];
-    /** Scratch of the contact's maths: a local point and a normal (contacts run on one thread). */
-    final double[] q = new double[3], n = new double[3], scratchNormal = new double[3];
+    /**
+     * Scratch of the contact's maths, one per thread (a local point, a normal, a second normal): vertex block
+     * descent projects the contacts of one colour's particles on several threads at once.
+     */
+    final ThreadLocal<double[][]> work = ThreadLocal.withInitial(() -> new double[][] {new double[3], new double[3], new double[3]});
 
     RigidCollider(SpherePath path, double[] rotation, double margin, double staticFriction, double kineticFriction) {
         super(margin, staticFriction, kineticFriction);
@@ -89,8 +92,10 @@ public abstract class RigidCollider extends Collider {
     @Override void project(Particles p, int i, double h) { ShapeCollisionConstraint.project(p, i, this, h); }
 
     @Override double clearance(Particles p, int i) {
+        double[][] w = work.get();
+        double[] q = w[0];
         toLocal(p.x[3 * i], p.x[3 * i + 1], p.x[3 * i + 2], q);
-        return distance(q[0], q[1], q[2], n) - margin;
+        return distance(q[0], q[1], q[2], w[1]) - margin;
     }
 
     /** World (x, y, z) in the solid's frame now, into out: Rᵀ(x − c). */

@@ -41,7 +41,8 @@ final class ShapeCollisionConstraint {
         final double[] x = p.x;
         final int k = 3 * i;
         if (p.w[i] == 0) return;
-        final double[] q = s.q, n = s.n;
+        final double[][] work = s.work.get();
+        final double[] q = work[0], n = work[1];
         s.toLocalAtStart(p.prev[k], p.prev[k + 1], p.prev[k + 2], q);
         double ax = q[0], ay = q[1], az = q[2];
         s.toLocal(x[k], x[k + 1], x[k + 2], q);
@@ -55,9 +56,9 @@ final class ShapeCollisionConstraint {
             boolean startedOutside = s.distance(ax, ay, az, n) - s.margin >= -TOUCHING;
             if (fb >= 0 && !startedOutside) return; // it has got out
             if (startedOutside) {
-                double t = fb < 0 ? 1 : deepest(s, ax, ay, az, mx, my, mz);
+                double t = fb < 0 ? 1 : deepest(s, ax, ay, az, mx, my, mz, n);
                 if (t < 0) return; // the segment never came within the margin
-                double t0 = firstTouch(s, ax, ay, az, mx, my, mz, t);
+                double t0 = firstTouch(s, ax, ay, az, mx, my, mz, t, n);
                 q[0] = ax + t0 * mx; q[1] = ay + t0 * my; q[2] = az + t0 * mz;
                 x[k] = s.cx + s.worldX(q); x[k + 1] = s.cy + s.worldY(q); x[k + 2] = s.cz + s.worldZ(q);
                 return;
@@ -67,7 +68,7 @@ final class ShapeCollisionConstraint {
         double nx = s.worldX(n), ny = s.worldY(n), nz = s.worldZ(n);
         // Out no faster than the depenetration speed from where it started inside (n is kept: the
         // distance at the start is taken into a scratch normal).
-        double startDepth = -(s.distance(ax, ay, az, s.scratchNormal) - s.margin);
+        double startDepth = -(s.distance(ax, ay, az, work[2]) - s.margin);
         double normalCorrection = -fb - Collider.leftInside(startDepth, h);
         if (normalCorrection <= 0) return;
         x[k] += normalCorrection * nx; x[k + 1] += normalCorrection * ny; x[k + 2] += normalCorrection * nz;
@@ -80,30 +81,30 @@ final class ShapeCollisionConstraint {
     }
 
     /** φ − m at a + t·m. */
-    private static double along(RigidCollider s, double ax, double ay, double az, double mx, double my, double mz, double t) {
-        return s.distance(ax + t * mx, ay + t * my, az + t * mz, s.n) - s.margin;
+    private static double along(RigidCollider s, double ax, double ay, double az, double mx, double my, double mz, double t, double[] n) {
+        return s.distance(ax + t * mx, ay + t * my, az + t * mz, n) - s.margin;
     }
 
     /** Where on [0, 1] the segment goes deepest, if it goes below the margin there; −1 otherwise. */
-    private static double deepest(RigidCollider s, double ax, double ay, double az, double mx, double my, double mz) {
+    private static double deepest(RigidCollider s, double ax, double ay, double az, double mx, double my, double mz, double[] n) {
         double lo = 0, hi = 1;
         double t1 = hi - GOLDEN * (hi - lo), t2 = lo + GOLDEN * (hi - lo);
-        double f1 = along(s, ax, ay, az, mx, my, mz, t1), f2 = along(s, ax, ay, az, mx, my, mz, t2);
+        double f1 = along(s, ax, ay, az, mx, my, mz, t1, n), f2 = along(s, ax, ay, az, mx, my, mz, t2, n);
         for (int it = 0; it < SEARCH_STEPS; it++) {
             if (f1 < 0) return t1;
             if (f2 < 0) return t2;
-            if (f1 <= f2) { hi = t2; t2 = t1; f2 = f1; t1 = hi - GOLDEN * (hi - lo); f1 = along(s, ax, ay, az, mx, my, mz, t1); }
-            else { lo = t1; t1 = t2; f1 = f2; t2 = lo + GOLDEN * (hi - lo); f2 = along(s, ax, ay, az, mx, my, mz, t2); }
+            if (f1 <= f2) { hi = t2; t2 = t1; f2 = f1; t1 = hi - GOLDEN * (hi - lo); f1 = along(s, ax, ay, az, mx, my, mz, t1, n); }
+            else { lo = t1; t1 = t2; f1 = f2; t2 = lo + GOLDEN * (hi - lo); f2 = along(s, ax, ay, az, mx, my, mz, t2, n); }
         }
         return -1;
     }
 
     /** The last t in [0, inside] at which the segment is still outside the margin (bisection; φ − m &lt; 0 at {@code inside}). */
-    private static double firstTouch(RigidCollider s, double ax, double ay, double az, double mx, double my, double mz, double inside) {
+    private static double firstTouch(RigidCollider s, double ax, double ay, double az, double mx, double my, double mz, double inside, double[] n) {
         double lo = 0, hi = inside;
         for (int it = 0; it < SEARCH_STEPS; it++) {
             double mid = 0.5 * (lo + hi);
-            if (along(s, ax, ay, az, mx, my, mz, mid) >= 0) lo = mid; else hi = mid;
+            if (along(s, ax, ay, az, mx, my, mz, mid, n) >= 0) lo = mid; else hi = mid;
         }
         return lo;
     }

@@ -10,7 +10,7 @@ import java.util.stream.Stream;
 import xpbdcloth.engine.Simulation;
 import xpbdcloth.scene.ObjExport;
 import xpbdcloth.scene.Scene;
-import xpbdcloth.usd.UsdMeshAnimation;
+import xpbdcloth.mesh.UsdMeshAnimation;
 
 /**
  * An observed motion: a folder of OBJ files, one per step of the scene's dt, read in name order, the
@@ -61,7 +61,10 @@ public final class Trajectory {
     static double[][] readUsd(Path file, Scene scene) {
         UsdMeshAnimation m;
         try {
-            m = UsdMeshAnimation.read(file, null);
+            // A recording's cloth is /World/Cloth (its bodies are meshes too); another file's one animated mesh.
+            xpbdcloth.mesh.UsdaReader.Stage stage = xpbdcloth.mesh.UsdaReader.read(file);
+            boolean recording = stage.prims.stream().anyMatch(p -> p.path.equals("/World/Cloth"));
+            m = UsdMeshAnimation.of(stage, recording ? "/World/Cloth" : null);
         } catch (IllegalArgumentException e) {
             throw new FitException(e.getMessage());
         }

@@ -221,6 +221,11 @@ public final class ClothMesh {
      * then moved by t: how a preset places a mesh file in its scene.
      */
     public ClothMesh transformed(double s, double[] rotationDegrees, double[] t) {
+        return new ClothMesh(place(positions, s, rotationDegrees, t), faces, triangles, segments, groups, triangleUVs, withoutUVs);
+    }
+
+    /** Positions (3 per vertex) scaled by s, rotated about x, then y, then z by the angles in degrees, then moved by t (a copy). */
+    public static double[] place(double[] positions, double s, double[] rotationDegrees, double[] t) {
         double[] p = positions.clone();
         double ax = Math.toRadians(rotationDegrees[0]), ay = Math.toRadians(rotationDegrees[1]), az = Math.toRadians(rotationDegrees[2]);
         for (int i = 0; i < p.length; i += 3) {
@@ -230,6 +235,6 @@ public final class ClothMesh {
             u = x * Math.cos(az) - y * Math.sin(az); y = x * Math.sin(az) + y * Math.cos(az); x = u;
             p[i] = x + t[0]; p[i + 1] = y + t[1]; p[i + 2] = z + t[2];
         }
-        return new ClothMesh(p, faces, triangles, segments, groups, triangleUVs, withoutUVs);
+        return p;
     }
 }

@@ -120,6 +120,8 @@ public final class Limits {
 
     /** Vertices of a mesh cloth after welding: as many as the largest grid. */
     public static final Range MESH_VERTICES = new Range(2, 512 * 512, "vertices");
+    /** Frames per second of an animated body's frames. */
+    public static final Range FRAME_RATE = new Range(0.01, 1000, "frames per second");
     /** A mesh file's uniform scale (its units to metres). */
     public static final Range MESH_SCALE = new Range(1e-4, 1e4, "");
     /** Each rotation angle of a mesh file, degrees. */

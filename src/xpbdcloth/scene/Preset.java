@@ -28,6 +28,8 @@ public final class Preset {
     public final List<PlaneSpec> planes;
     /** Boxes and capsules. */
     public final List<SolidSpec> solids;
+    /** Triangle meshes to collide with (still, animated, or on a rigid path). */
+    public final List<BodySpec> bodies;
     /** The cloth's contacts with itself, or null when it passes through itself. */
     public final SelfCollisionSpec selfCollision;
     public final List<PinMotion> pinMotions;
@@ -39,7 +41,7 @@ public final class Preset {
     public final AerodynamicsSpec aerodynamics;
 
     Preset(String source, String name, String description, Cloth cloth, Map<ConstraintFamily, Material> families, Solver solver,
-           List<SphereSpec> spheres, List<PlaneSpec> planes, List<SolidSpec> solids, SelfCollisionSpec selfCollision, List<PinMotion> pinMotions, WindSpec wind,
+           List<SphereSpec> spheres, List<PlaneSpec> planes, List<SolidSpec> solids, List<BodySpec> bodies, SelfCollisionSpec selfCollision, List<PinMotion> pinMotions, WindSpec wind,
            FabricSpec fabric, AerodynamicsSpec aerodynamics) {
         this.source = source;
         this.name = name;
@@ -50,11 +52,27 @@ public final class Preset {
         this.spheres = Collections.unmodifiableList(spheres);
         this.planes = Collections.unmodifiableList(planes);
         this.solids = Collections.unmodifiableList(solids);
+        this.bodies = Collections.unmodifiableList(bodies);
         this.selfCollision = selfCollision;
         this.pinMotions = Collections.unmodifiableList(pinMotions);
         this.wind = wind;
         this.fabric = fabric;
         this.aerodynamics = aerodynamics;
+    }
+
+    /** A triangle mesh to collide with: the file's body as placed, whether its frames loop, friction, and a rigid path and spin. */
+    public static final class BodySpec {
+        public final String file;
+        public final xpbdcloth.mesh.BodyMesh mesh;
+        public final boolean loop;
+        public final double margin, staticFriction, kineticFriction;
+        public final double[] angularVelocity;
+        public final PathSpec path;
+
+        BodySpec(String file, xpbdcloth.mesh.BodyMesh mesh, boolean loop, double margin, double staticFriction, double kineticFriction, double[] angularVelocity, PathSpec path) {
+            this.file = file; this.mesh = mesh; this.loop = loop; this.margin = margin; this.staticFriction = staticFriction;
+            this.kineticFriction = kineticFriction; this.angularVelocity = angularVelocity; this.path = path;
+        }
     }
 
     /** Air of density ρ (kg/m³) moving at a velocity (m/s), and a flat plate's drag and lift coefficients. */

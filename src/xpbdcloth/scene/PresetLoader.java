@@ -24,7 +24,10 @@ import xpbdcloth.engine.ConstraintMode;
 import xpbdcloth.engine.OrthotropicMaterial;
 import xpbdcloth.fabric.DataDrivenSample;
 import xpbdcloth.fabric.Fabric;
+import xpbdcloth.mesh.BodyMesh;
 import xpbdcloth.mesh.ClothMesh;
+import xpbdcloth.mesh.UsdMeshAnimation;
+import xpbdcloth.mesh.UsdaReader;
 import xpbdcloth.mesh.MeshFileException;
 import xpbdcloth.mesh.ObjReader;
 
@@ -35,7 +38,7 @@ import xpbdcloth.mesh.ObjReader;
  */
 public final class PresetLoader {
     /** The presets that ship with the project, in the order the sketch offers them. */
-    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth", "table", "arm", "drop-fold", "fabric", "flag-fabric", "drape", "denim-fold");
+    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth", "table", "arm", "drop-fold", "fabric", "flag-fabric", "drape", "denim-fold", "mannequin-poncho", "mannequin-arms", "torus-spin");
 
     private static final ObjectMapper JSON = new ObjectMapper()
             .enable(JsonParser.Feature.STRICT_DUPLICATE_DETECTION);
@@ -48,7 +51,7 @@ public final class PresetLoader {
         try (InputStream in = PresetLoader.class.getResourceAsStream("/presets/" + file)) {
             if (in == null) throw new PresetException(name, "(file)", "no built-in preset of that name; built-in: " + String.join(", ", BUILT_IN));
             String text = new String(in.readAllBytes(), StandardCharsets.UTF_8);
-            return parse(file, text, PresetLoader::builtInMesh);
+            return parse(file, text, BUILT_IN_FILES);
         } catch (IOException e) {
             throw new PresetException(file, "(file)", "cannot be read: " + e.getMessage());
         }
@@ -71,21 +74,63 @@ public final class PresetLoader {
         return jackson.replaceAll(":? *(?:enable|use) `?JsonReadFeature\\.[A-Z_]+`?[^\\n]*", "");
     }
 
-    /** Where a preset's mesh file is found: by its name relative to the preset. */
-    interface MeshFiles {
-        ClothMesh load(String relativeName, double weld);
+    /** A body file beside the built-in presets (in the jar): an OBJ or a USD text file. */
+    private static BodyMesh builtInBody(String name) {
+        try (InputStream in = PresetLoader.class.getResourceAsStream("/presets/" + name)) {
+            if (in == null) throw new MeshFileException(name, 0, "no such file beside the built-in presets");
+            String text = new String(in.readAllBytes(), StandardCharsets.UTF_8);
+            if (name.toLowerCase(java.util.Locale.ROOT).endsWith(".usda"))
+                return BodyMesh.of(UsdMeshAnimation.of(UsdaReader.parse(name, new java.io.StringReader(text)), null));
+            return BodyMesh.of(name, ObjReader.parse(name, text, BODY_WELD));
+        } catch (IOException e) {
+            throw new MeshFileException(name, 0, "cannot be read: " + e.getMessage());
+        }
     }
+
+    /** Vertices of a body's OBJ closer than this (m) are one: exporters split them along seams. */
+    static final double BODY_WELD = 1e-6;
+
+    /** Where a preset's mesh files are found: by their names relative to the preset. */
+    interface MeshFiles {
+        /** A cloth's mesh. */
+        ClothMesh load(String relativeName, double weld);
+
+        /** A body to collide with: an OBJ, a .usda with an animated Mesh, or a folder of OBJ frames (played at fps). */
+        BodyMesh body(String relativeName, double fps);
+    }
+
+    private static final MeshFiles BUILT_IN_FILES = new MeshFiles() {
+        @Override public ClothMesh load(String name, double weld) { return builtInMesh(name, weld); }
+        @Override public BodyMesh body(String name, double fps) { return builtInBody(name); }
+    };
 
     /**
      * Mesh files relative to a folder; a plain name found nowhere there but shipped beside the built-in
      * presets is taken from the jar, so a copied built-in preset (cp data/flag.json .) still runs.
      */
     private static MeshFiles besides(Path folder) {
-        return (name, weld) -> {
-            Path file = folder.resolve(name);
-            boolean plainName = !name.contains("/") && !name.contains("\\");
-            if (!Files.exists(file) && plainName && PresetLoader.class.getResource("/presets/" + name) != null) return builtInMesh(name, weld);
-            return ObjReader.read(file, weld);
+        return new MeshFiles() {
+            @Override public ClothMesh load(String name, double weld) {
+                Path file = folder.resolve(name);
+                if (!Files.exists(file) && builtIn(name)) return builtInMesh(name, weld);
+                return ObjReader.read(file, weld);
+            }
+
+            @Override public BodyMesh body(String name, double fps) {
+                Path file = folder.resolve(name);
+                if (!Files.exists(file) && builtIn(name)) return builtInBody(name);
+                if (Files.isDirectory(file)) {
+                    if (Double.isNaN(fps)) throw new MeshFileException(name, 0, "is a folder of frames: give their rate, fps");
+                    return BodyMesh.ofFrames(file, fps, BODY_WELD);
+                }
+                if (name.toLowerCase(java.util.Locale.ROOT).endsWith(".usda")) return BodyMesh.of(UsdMeshAnimation.read(file, null));
+                return BodyMesh.of(name, ObjReader.read(file, BODY_WELD));
+            }
+
+            private boolean builtIn(String name) {
+                boolean plainName = !name.contains("/") && !name.contains("\\");
+                return plainName && PresetLoader.class.getResource("/presets/" + name) != null;
+            }
         };
     }
 
@@ -267,6 +312,7 @@ public final class PresetLoader {
             if (ss != null) for (Node s : array(ss, Limits.MAX_SPHERES)) spheres.add(sphere(s));
             List<Preset.PlaneSpec> planes = new ArrayList<>();
             List<Preset.SolidSpec> solids = new ArrayList<>();
+            List<Preset.BodySpec> bodies = new ArrayList<>();
             Node cs = optional(root, "colliders");
             if (cs != null) for (Node c : array(cs, Limits.MAX_SPHERES)) {
                 String type = c.json.isObject() && c.json.has("type") ? string(required(c, "type")) : "";
@@ -274,12 +320,15 @@ public final class PresetLoader {
                     case "plane": planes.add(plane(c)); break;
                     case "sphere": spheres.add(sphere(c)); break;
                     case "box": case "capsule": solids.add(solid(c, type)); break;
-                    default: throw fail(c.child("type"), (type.isEmpty() ? "is missing" : "was \"" + type + "\"") + "; one of plane, sphere, box, capsule");
+                    case "mesh": bodies.add(body(c)); break;
+                    default: throw fail(c.child("type"), (type.isEmpty() ? "is missing" : "was \"" + type + "\"") + "; one of plane, sphere, box, capsule, mesh");
                 }
             }
-            if (spheres.size() + planes.size() + solids.size() > Limits.MAX_SPHERES)
-                throw fail("colliders", "at most " + Limits.MAX_SPHERES + " colliders with the spheres, had " + (spheres.size() + planes.size() + solids.size()));
+            int colliders = spheres.size() + planes.size() + solids.size() + bodies.size();
+            if (colliders > Limits.MAX_SPHERES)
+                throw fail("colliders", "at most " + Limits.MAX_SPHERES + " colliders with the spheres, had " + colliders);
             checkThickness(cloth, spheres, planes, solids);
+            for (int i = 0; i < bodies.size(); i++) checkThickness(bodies.get(i).margin, cloth.shortestEdge(), "colliders (mesh " + i + ").margin");
             Node sc = optional(root, "selfCollision");
             Preset.SelfCollisionSpec self = sc == null ? null : selfCollision(sc, cloth);
             List<Preset.PinMotion> motions = new ArrayList<>();
@@ -287,9 +336,9 @@ public final class PresetLoader {
             if (ms != null) for (Node m : array(ms, Limits.MAX_PIN_MOTIONS)) motions.add(pinMotion(m, cloth));
             Node w = optional(root, "wind");
             long particles = cloth.mesh != null ? cloth.mesh.vertexCount() : (long) cloth.columns * cloth.rows;
-            String tooMuch = Limits.workProblem(particles, solver.iterations, solver.substeps, spheres.size() + planes.size() + solids.size(), solver.type.isGlobal());
+            String tooMuch = Limits.workProblem(particles, solver.iterations, solver.substeps, colliders, solver.type.isGlobal());
             if (tooMuch != null) throw fail("solver", tooMuch);
-            return new Preset(file, name, description, cloth, families, solver, spheres, planes, solids, self, motions, w == null ? null : wind(w), fabric, aerodynamics(optional(root, "aerodynamics")));
+            return new Preset(file, name, description, cloth, families, solver, spheres, planes, solids, bodies, self, motions, w == null ? null : wind(w), fabric, aerodynamics(optional(root, "aerodynamics")));
         }
 
         Preset.Cloth cloth(Node n, Preset.FabricSpec fabric) {
@@ -613,6 +662,47 @@ public final class PresetLoader {
             }
             return new Preset.SolidSpec(type, null, null, direction(required(n, "axis")), number(required(n, "halfLength"), Limits.PATH_RADIUS),
                     number(required(n, "radius"), Limits.SPHERE_RADIUS), margin(n), mus, muk, omega, path);
+        }
+
+        /**
+         * A triangle mesh to collide with, from a file (OBJ, USD text, or a folder of OBJ frames), placed by
+         * scale, rotation and translation; still, animated by its frames (fps, loop), and moved rigidly by a
+         * path and spin about the path's start (default: fixed at the origin, the mesh where its file puts it).
+         */
+        Preset.BodySpec body(Node n) {
+            object(n, Set.of("type", "file", "fps", "loop", "scale", "rotation", "translation", "margin", "staticFriction", "kineticFriction", "angularVelocity", "path"));
+            Node f = required(n, "file");
+            String name = string(f);
+            Node fp = optional(n, "fps"), lp = optional(n, "loop"), sc = optional(n, "scale"), r = optional(n, "rotation"), t = optional(n, "translation");
+            double fps = fp == null ? Double.NaN : number(fp, Limits.FRAME_RATE);
+            boolean loop = lp != null && bool(lp);
+            double scale = sc == null ? 1 : number(sc, Limits.MESH_SCALE);
+            double[] rotation = r == null ? new double[3] : vector(r, Limits.ROTATION);
+            double[] translation = t == null ? new double[3] : vector(t, Limits.POSITION);
+            double mus = number(required(n, "staticFriction"), Limits.FRICTION);
+            double muk = number(required(n, "kineticFriction"), Limits.FRICTION);
+            Node w = optional(n, "angularVelocity");
+            double[] omega = w == null ? new double[3] : vector(w, Limits.ANGULAR_VELOCITY);
+            Node pn = optional(n, "path");
+            Preset.PathSpec path = pn == null ? new Preset.PathSpec("fixed", new double[3], new double[3], 0, 0) : path(pn);
+            BodyMesh body;
+            try {
+                body = meshes.body(name, fps);
+            } catch (MeshFileException e) {
+                throw fail(f.path, e.getMessage());
+            } catch (IllegalArgumentException e) {
+                throw fail(f.path, name + ": " + e.getMessage());
+            }
+            if (body.animated() && fp != null) body = body.at(fps);
+            if (!body.animated() && fp != null) throw fail(fp.path, "is the rate of an animated body's frames; " + name + " is still (one shape)");
+            if (!body.animated() && lp != null) throw fail(lp.path, "loops an animated body's frames; " + name + " is still (one shape)");
+            body = body.transformed(scale, rotation, translation);
+            double[][] shapes = body.animated() ? body.frames : new double[][] {body.vertices};
+            for (int k = 0; k < shapes.length; k++)
+                for (int i = 0; i < shapes[k].length; i++)
+                    if (!Limits.POSITION.contains(shapes[k][i]))
+                        throw fail(n.path, "vertex " + i / 3 + (body.animated() ? " of frame " + k : "") + " lands at " + shapes[k][i] + " on axis " + "xyz".charAt(i % 3) + ", outside " + Limits.POSITION.text() + " m");
+            return new Preset.BodySpec(name, body, loop, margin(n), mus, muk, omega, path);
         }
 
         /**

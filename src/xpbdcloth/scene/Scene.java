@@ -9,6 +9,7 @@ import xpbdcloth.engine.Cloth;
 import xpbdcloth.engine.ClothBuilder;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.MeshClothBuilder;
+import xpbdcloth.engine.MeshCollider;
 import xpbdcloth.engine.Plane;
 import xpbdcloth.engine.SolverSettings;
 import xpbdcloth.engine.Simulation;
@@ -64,6 +65,10 @@ public final class Scene {
                     ? new Box(path(sp.path), sp.halfExtents, sp.rotation, sp.margin, sp.staticFriction, sp.kineticFriction)
                     : new Capsule(path(sp.path), sp.axis, sp.halfLength, sp.radius, sp.margin, sp.staticFriction, sp.kineticFriction);
             simulation.add(solid.spin(sp.angularVelocity[0], sp.angularVelocity[1], sp.angularVelocity[2]));
+        }
+        for (Preset.BodySpec b : preset.bodies) {
+            MeshCollider body = new MeshCollider(path(b.path), b.mesh.vertices, b.mesh.triangles, b.mesh.frames, b.mesh.fps, b.loop, b.margin, b.staticFriction, b.kineticFriction);
+            simulation.add(body.spin(b.angularVelocity[0], b.angularVelocity[1], b.angularVelocity[2]));
         }
         for (Preset.SphereSpec sp : preset.spheres) {
             Sphere sphere = new Sphere(path(sp), sp.radius, sp.margin, sp.staticFriction, sp.kineticFriction)

@@ -4,12 +4,15 @@ import processing.core.PConstants;
 import processing.core.PGraphics;
 import xpbdcloth.engine.Box;
 import xpbdcloth.engine.Capsule;
+import xpbdcloth.engine.MeshCollider;
 import xpbdcloth.engine.RigidCollider;
+import xpbdcloth.mesh.VertexNormals;
 
 /**
  * A box or a capsule as triangles with normals, in the solid's own frame, placed in the world each frame
  * into arrays kept between frames: drawn lit, and handed to {@link GroundShadow} for its shadow, from the
- * same triangles. A capsule is two hemispheres joined by a cylinder, in rings of latitude.
+ * same triangles. A capsule is two hemispheres joined by a cylinder, in rings of latitude. A triangle mesh
+ * is its own triangles where the engine has put them now, with smooth vertex normals.
  */
 final class SolidMesh {
     static final int SEGMENTS = 24, CAP_RINGS = 8;
@@ -23,7 +26,11 @@ final class SolidMesh {
 
     SolidMesh(RigidCollider solid) {
         this.solid = solid;
-        if (solid instanceof Box) {
+        if (solid instanceof MeshCollider) {
+            MeshCollider m = (MeshCollider) solid;
+            local = localNormals = null;
+            triangles = m.triangles();
+        } else if (solid instanceof Box) {
             Box b = (Box) solid;
             double[][] built = box(b.halfExtentX(), b.halfExtentY(), b.halfExtentZ());
             local = built[0];
@@ -36,12 +43,18 @@ final class SolidMesh {
             capsule(c.halfLength(), c.radius(), local, localNormals);
             triangles = ringTriangles(2 * CAP_RINGS + 2);
         }
-        world = new double[local.length];
-        normals = new double[local.length];
+        int size = local == null ? 3 * ((MeshCollider) solid).vertexCount() : local.length;
+        world = new double[size];
+        normals = new double[size];
     }
 
     /** Puts the mesh where the solid is now. */
     void place() {
+        if (local == null) {
+            System.arraycopy(((MeshCollider) solid).vertices(), 0, world, 0, world.length);
+            VertexNormals.compute(world, triangles, normals);
+            return;
+        }
         solid.rotation(rotation);
         double[] r = rotation;
         for (int k = 0; k < local.length; k += 3) {

@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.Locale;
 import xpbdcloth.engine.Box;
 import xpbdcloth.engine.Capsule;
+import xpbdcloth.engine.MeshCollider;
 import xpbdcloth.engine.Plane;
 import xpbdcloth.engine.RigidCollider;
 import xpbdcloth.engine.Simulation;
@@ -33,7 +34,8 @@ import xpbdcloth.scene.Scene;
  *     name and moduli as custom {@code xpbd:} attributes;</li>
  * <li>each collider a prim with a time-sampled {@code xformOp:transform}: a sphere a {@code Sphere}, a
  *     capsule a {@code Capsule} along its local y, a box a {@code Cube} of size 2 scaled to its half
- *     extents, a plane (infinite) a square {@code Mesh} around the cloth;</li>
+ *     extents, a plane (infinite) a square {@code Mesh} around the cloth, a triangle-mesh collider a
+ *     {@code Mesh} of its vertices in the world (time-sampled when it moves);</li>
  * <li>metres ({@code metersPerUnit = 1}), y up, time code k the k-th frame after the start at the
  *     recording's rate ({@code timeCodesPerSecond = framesPerSecond = fps}); code 0 the state the
  *     recording started from.</li>
@@ -97,10 +99,11 @@ public final class UsdRecording implements Closeable {
         Simulation sim = scene.simulation();
         int k = 0;
         for (Sphere s : sim.spheres()) colliders.add(new SpherePrim("Sphere" + k++, s));
-        int boxes = 0, capsules = 0;
+        int boxes = 0, capsules = 0, bodies = 0;
         for (RigidCollider s : sim.solids()) {
             if (s instanceof Box) colliders.add(new BoxPrim("Box" + boxes++, (Box) s));
             else if (s instanceof Capsule) colliders.add(new CapsulePrim("Capsule" + capsules++, (Capsule) s));
+            else if (s instanceof MeshCollider) colliders.add(new BodyPrim("Body" + bodies++, (MeshCollider) s));
             else throw new IllegalStateException("no USD prim for a " + s.getClass().getSimpleName());
         }
         k = 0;
@@ -159,7 +162,7 @@ public final class UsdRecording implements Closeable {
         tuple(lo, 0, 3, true).append(", ");
         tuple(hi, 0, 3, true);
         close(extent);
-        for (ColliderPrim c : colliders) if (c.transform != null) c.sample();
+        for (ColliderPrim c : colliders) c.frame();
         frames++;
     }
 
@@ -356,6 +359,9 @@ public final class UsdRecording implements Closeable {
         /** The rotation (row-major, column vectors) and centre now, into rotation and the returned centre. */
         abstract double[] pose();
 
+        /** This frame's samples: the pose, when it can move. */
+        void frame() throws IOException { if (transform != null) sample(); }
+
         abstract void attributes(StringBuilder b);
 
         /**
@@ -449,6 +455,64 @@ public final class UsdRecording implements Closeable {
             UsdaText.appendFloat(b, box.halfExtentX()).append(", ");
             UsdaText.appendFloat(b, box.halfExtentY()).append(", ");
             UsdaText.appendFloat(b, box.halfExtentZ()).append(")\n");
+        }
+    }
+
+    /**
+     * A triangle-mesh collider as a Mesh whose points are its vertices in the world (its rigid motion and its
+     * frames both baked in): time-sampled when they ever change, else written once.
+     */
+    private final class BodyPrim extends ColliderPrim {
+        final MeshCollider body;
+        final Samples points;
+        final double[] first;
+        boolean changed;
+
+        BodyPrim(String name, MeshCollider body) throws IOException {
+            super(name, "Mesh", body.margin(), false);
+            this.body = body;
+            points = stream("point3f[] points");
+            first = body.vertices().clone();
+        }
+
+        @Override double[] pose() { return null; }
+
+        @Override void frame() throws IOException {
+            double[] v = body.vertices();
+            changed |= !java.util.Arrays.equals(v, first);
+            line.setLength(0);
+            line.append("            ").append(frames).append(": [");
+            for (int i = 0; i < v.length / 3; i++) tuple(line, v, 3 * i, 3, i == 0);
+            line.append("],\n");
+            points.out.append(line);
+        }
+
+        @Override void attributes(StringBuilder b) {
+            int[] t = body.triangles();
+            b.append("        uniform bool doubleSided = 1\n        int[] faceVertexCounts = [");
+            for (int k = 0; k < t.length / 3; k++) b.append(k == 0 ? "" : ", ").append(3);
+            b.append("]\n        int[] faceVertexIndices = [");
+            for (int k = 0; k < t.length; k++) b.append(k == 0 ? "" : ", ").append(t[k]);
+            b.append("]\n        uniform token subdivisionScheme = \"none\"\n");
+            b.append("        custom string xpbd:collider = \"mesh\"\n");
+        }
+
+        @Override void write(Writer w) throws IOException {
+            StringBuilder b = new StringBuilder();
+            b.append("    def Mesh ").append(UsdaText.quoted(name)).append("\n    {\n");
+            attributes(b);
+            b.append("        custom double xpbd:margin = ");
+            UsdaText.appendDouble(b, margin).append("\n");
+            if (!changed) {
+                b.append("        point3f[] points = [");
+                for (int i = 0; i < first.length / 3; i++) tuple(b, first, 3 * i, 3, i == 0);
+                b.append("]\n");
+                w.write(b.toString());
+            } else {
+                w.write(b.toString());
+                points.copyInto(w);
+            }
+            w.write("    }\n\n");
         }
     }
 

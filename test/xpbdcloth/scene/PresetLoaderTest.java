@@ -98,7 +98,7 @@ class PresetLoaderTest {
         assertEquals(1.005, scene.simulation().planes().get(0).distance(0, 0.005, 0), 1e-12, "a floor at y = -1");
         PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse("cone.json", floor.replace("\"type\": \"plane\"", "\"type\": \"cone\"")));
         assertEquals("colliders[0].type", e.field(), e.getMessage());
-        assertEquals("was \"cone\"; one of plane, sphere, box, capsule", e.problem());
+        assertEquals("was \"cone\"; one of plane, sphere, box, capsule, mesh", e.problem());
         e = assertThrows(PresetException.class, () -> PresetLoader.parse("flat.json", floor.replace("\"normal\": [0, 1, 0]", "\"normal\": [0, 0, 0]")));
         assertEquals("colliders[0].normal", e.field(), e.getMessage());
     }

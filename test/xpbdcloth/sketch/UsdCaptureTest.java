@@ -8,7 +8,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import xpbdcloth.scene.ObjExport;
 import xpbdcloth.scene.PresetLoader;
-import xpbdcloth.usd.UsdMeshAnimation;
+import xpbdcloth.mesh.UsdMeshAnimation;
 
 /**
  * The R key's recording: a frame every 1/60 s of simulated time (or every step when dt is longer), whatever

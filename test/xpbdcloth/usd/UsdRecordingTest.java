@@ -11,6 +11,8 @@ import xpbdcloth.engine.Box;
 import xpbdcloth.engine.RigidCollider;
 import xpbdcloth.engine.Simulation;
 import xpbdcloth.engine.Sphere;
+import xpbdcloth.mesh.UsdMeshAnimation;
+import xpbdcloth.mesh.UsdaReader;
 import xpbdcloth.scene.Scene;
 
 /**

@@ -1,4 +1,4 @@
-package xpbdcloth.usd;
+package xpbdcloth.mesh;
 
 import java.io.BufferedReader;
 import java.io.IOException;
@@ -13,7 +13,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.TreeMap;
-import xpbdcloth.mesh.MeshFileException;
 
 /**
  * Reads USD's text form (.usda) as far as a flattened stage of plain prims goes: the layer's metadata,
@@ -93,13 +92,19 @@ public final class UsdaReader {
                     throw new MeshFileException(file, 0, "is a USDZ package (a zip); unzip it and read the .usda or convert its .usdc with usdcat");
             }
             try (BufferedReader r = Files.newBufferedReader(path, StandardCharsets.UTF_8)) {
-                return new UsdaReader(file, r).stage();
+                return parse(file, r);
             }
         } catch (java.nio.charset.MalformedInputException e) {
             throw new MeshFileException(file, 0, "is not UTF-8 text, so not USD's text form");
         } catch (IOException e) {
             throw new MeshFileException(file, 0, "cannot be read: " + e.getMessage());
         }
+    }
+
+    /** Reads USD text from a reader (a file's, or a resource's), {@code file} naming it in errors. */
+    public static Stage parse(String file, java.io.Reader text) throws IOException {
+        BufferedReader r = text instanceof BufferedReader ? (BufferedReader) text : new BufferedReader(text);
+        return new UsdaReader(file, r).stage();
     }
 
     private Stage stage() throws IOException {

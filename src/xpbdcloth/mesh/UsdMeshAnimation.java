@@ -1,10 +1,9 @@
-package xpbdcloth.usd;
+package xpbdcloth.mesh;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import xpbdcloth.mesh.MeshFileException;
 
 /**
  * One {@code Mesh} prim of a USD text file and its time-sampled points: an animated body, or an observed
@@ -16,7 +15,7 @@ import xpbdcloth.mesh.MeshFileException;
  */
 public final class UsdMeshAnimation {
     /** The most vertices a mesh read here may have (as an OBJ cloth). */
-    public static final int MAX_VERTICES = xpbdcloth.mesh.ObjReader.MAX_VERTICES;
+    public static final int MAX_VERTICES = ObjReader.MAX_VERTICES;
 
     public final String file, prim;
     public final int[] faceVertexCounts, faceVertexIndices;
@@ -43,7 +42,11 @@ public final class UsdMeshAnimation {
      * time-sampled (a recording's cloth; its planes are Meshes too, but still).
      */
     public static UsdMeshAnimation read(Path path, String primPath) {
-        UsdaReader.Stage stage = UsdaReader.read(path);
+        return of(UsdaReader.read(path), primPath);
+    }
+
+    /** The same from a stage already read. */
+    public static UsdMeshAnimation of(UsdaReader.Stage stage, String primPath) {
         String file = stage.file;
         UsdaReader.Prim mesh = primPath != null ? find(stage, primPath) : theAnimatedMesh(stage);
         if (!"Mesh".equals(mesh.type))
@@ -75,7 +78,7 @@ public final class UsdMeshAnimation {
                 throw new MeshFileException(file, mesh.line, "points of " + mesh.path + " at time code " + codes.get(f) + " are " + x.length / 3 + ", at " + codes.get(0) + " they were " + n + ": the count must not change");
             for (int i = 0; i < x.length; i++) {
                 x[i] *= scale;
-                if (!(Math.abs(x[i]) <= xpbdcloth.mesh.ObjReader.MAX_COORDINATE))
+                if (!(Math.abs(x[i]) <= ObjReader.MAX_COORDINATE))
                     throw new MeshFileException(file, mesh.line, "point " + i / 3 + " of " + mesh.path + " at time code " + codes.get(f) + " must be finite and within ±1e12 m, was " + x[i]);
             }
         }

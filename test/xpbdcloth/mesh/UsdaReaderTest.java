@@ -1,4 +1,4 @@
-package xpbdcloth.usd;
+package xpbdcloth.mesh;
 
 import static org.junit.jupiter.api.Assertions.*;
 
@@ -8,7 +8,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import xpbdcloth.mesh.MeshFileException;
 
 /** The .usda reader takes what Pixar's library writes, and refuses by name what it does not read, with the line. */
 class UsdaReaderTest {
