@@ -9,7 +9,7 @@ import java.util.List;
  * revolution with elliptical sections (hips 33 cm wide, waist 28, chest 34, shoulders 38), a neck, a head,
  * two arms and two legs as capsules. Every part is closed and wound outwards, so the whole mesh is closed
  * and a collider knows its inside. The arms hang from the shoulder joints at an angle from the vertical;
- * {@link #armsRaising} gives the same triangles with the arms lifted sideways, frame by frame.
+ * {@link #turning} gives the same triangles turning on the spot, frame by frame.
  */
 public final class Mannequin {
     private Mannequin() {}
@@ -36,15 +36,24 @@ public final class Mannequin {
     }
 
     /**
-     * The arms raising sideways from 10° to 80° from the vertical and back, in {@code frames} frames (a
-     * loop: the frame after the last is the first): vertex positions per frame, the triangles of
-     * {@link #generate}'s mesh.
+     * The figure turning on the spot, 60° to its left and to its right and back, in {@code frames} frames (a
+     * loop: the frame after the last is the first), arms at 10°: vertex positions per frame, the triangles of
+     * {@link #generate}'s mesh. A turn and not a raising of the arms: an arm closing on the torso, or rising
+     * against the shoulder, pinches cloth between two overlapping parts of the body, which the contact cannot
+     * yet resolve (docs/contacts.md).
      */
-    public static double[][] armsRaising(int frames) {
+    public static double[][] turning(int frames) {
+        double[] rest = generate(10).positions();
         double[][] out = new double[frames][];
         for (int f = 0; f < frames; f++) {
-            double phase = (1 - Math.cos(2 * Math.PI * f / frames)) / 2;
-            out[f] = generate(10 + 70 * phase).positions();
+            double a = Math.toRadians(60) * Math.sin(2 * Math.PI * f / frames), c = Math.cos(a), s = Math.sin(a);
+            double[] p = rest.clone();
+            for (int i = 0; i < p.length; i += 3) {
+                double x = rest[i], z = rest[i + 2];
+                p[i] = c * x + s * z;
+                p[i + 2] = -s * x + c * z;
+            }
+            out[f] = p;
         }
         return out;
     }

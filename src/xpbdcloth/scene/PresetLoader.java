@@ -38,7 +38,7 @@ import xpbdcloth.mesh.ObjReader;
  */
 public final class PresetLoader {
     /** The presets that ship with the project, in the order the sketch offers them. */
-    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth", "table", "arm", "drop-fold", "fabric", "flag-fabric", "drape", "denim-fold", "mannequin-poncho", "mannequin-arms", "torus-spin");
+    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth", "table", "arm", "drop-fold", "fabric", "flag-fabric", "drape", "denim-fold", "mannequin-poncho", "mannequin-turn", "torus-spin");
 
     private static final ObjectMapper JSON = new ObjectMapper()
             .enable(JsonParser.Feature.STRICT_DUPLICATE_DETECTION);

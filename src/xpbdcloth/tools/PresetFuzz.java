@@ -237,7 +237,24 @@ final class PresetFuzz {
                 json.append(", \"colliders\": [");
                 for (int k = 0; k < solids; k++) {
                     json.append(k == 0 ? "" : ", ");
-                    int kind = r.nextInt(4);
+                    int kind = r.nextInt(5);
+                    if (kind == 4) { // a triangle mesh: still, animated (its own rate or another, looped or held), placed anywhere
+                        String[] bodies = {"torus.obj", "mannequin.obj", "mannequin-turn.usda"};
+                        String body = bodies[r.nextInt(bodies.length)];
+                        json.append("{ \"type\": \"mesh\", \"file\": \"").append(body).append('"');
+                        if (body.endsWith(".usda") && r.nextBoolean()) json.append(", \"fps\": ").append(num(draw(Limits.FRAME_RATE, true)));
+                        if (body.endsWith(".usda") && r.nextBoolean()) json.append(", \"loop\": ").append(r.nextBoolean());
+                        json.append(", \"scale\": ").append(num(Math.exp(r.nextDouble() * 2 - 1)))
+                            .append(", \"rotation\": ").append(vec(Limits.ROTATION)) // a body of a few metres at most, kept inside the world's bounds
+                            .append(", \"translation\": [").append(num(0.99 * draw(Limits.POSITION, false))).append(", ").append(num(0.99 * draw(Limits.POSITION, false)))
+                            .append(", ").append(num(0.99 * draw(Limits.POSITION, false))).append("]")
+                            .append(", \"margin\": ").append(num(Math.min(0.999 * halfEdge, draw(Limits.MARGIN, false))))
+                            .append(", \"staticFriction\": ").append(num(draw(Limits.FRICTION, false)))
+                            .append(", \"kineticFriction\": ").append(num(draw(Limits.FRICTION, false)));
+                        if (r.nextBoolean()) json.append(", \"angularVelocity\": ").append(vec(Limits.ANGULAR_VELOCITY)).append(", \"path\": ").append(path());
+                        json.append(" }");
+                        continue;
+                    }
                     if (kind == 2) { // a plane: any point, a normal not near zero
                         json.append("{ \"type\": \"plane\", \"point\": ").append(vec(Limits.POSITION)).append(", \"normal\": [")
                             .append(num(r.nextDouble() * 2 - 1)).append(", ").append(num(0.5 + 0.5 * r.nextDouble())).append(", ").append(num(r.nextDouble() * 2 - 1))

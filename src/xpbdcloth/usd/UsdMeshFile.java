@@ -7,11 +7,14 @@ import java.util.Locale;
 /**
  * A triangle mesh whose points change per frame, as a USD text stage of its own: one {@code Mesh} prim
  * under {@code /World}, its triangles once and its points time-sampled, time code k at k/fps seconds,
- * metres, y up. How the project ships an animated body (the mannequin raising its arms) that
+ * metres, y up, coordinates to 10 µm. How the project ships an animated body (the mannequin turning) that
  * {@link xpbdcloth.mesh.BodyMesh} reads back.
  */
 public final class UsdMeshFile {
     private UsdMeshFile() {}
+
+    /** A coordinate rounded to 10 µm: a shipped body's shape to far below any cloth's thickness, in fewer digits. */
+    static double tenMicrometres(double v) { return Math.rint(v * 1e5) / 1e5; }
 
     public static void write(Writer w, String primName, int[] triangles, double[][] frames, double fps, String doc) throws IOException {
         if (frames.length == 0) throw new IllegalArgumentException("frames must hold at least one frame, was none");
@@ -33,9 +36,9 @@ public final class UsdMeshFile {
             double[] x = frames[f];
             for (int i = 0; i < x.length; i += 3) {
                 b.append(i == 0 ? "(" : ", (");
-                UsdaText.appendFloat(b, x[i]).append(", ");
-                UsdaText.appendFloat(b, x[i + 1]).append(", ");
-                UsdaText.appendFloat(b, x[i + 2]).append(')');
+                UsdaText.appendFloat(b, tenMicrometres(x[i])).append(", ");
+                UsdaText.appendFloat(b, tenMicrometres(x[i + 1])).append(", ");
+                UsdaText.appendFloat(b, tenMicrometres(x[i + 2])).append(')');
             }
             w.write(b.append("],\n").toString());
         }
