@@ -35,6 +35,25 @@ public abstract class Collider {
         return Math.max(0, startDepth - MAX_DEPENETRATION_SPEED * h);
     }
 
+    /**
+     * After a contact moved particle k (index 3i) out by {@code correction} along n: the part of it that only
+     * undoes where the particle already was inside at the substep's start ({@code startDepth} beyond the
+     * margin, less what is left inside) is moved in its previous position too, so getting out of a solid
+     * adds no velocity. Without this, cloth a solid had passed into (a box lowered through cloth lying on
+     * the floor) left it at the depenetration speed and flew metres high; the part of the correction that
+     * stops the particle's own motion into the surface still removes that motion's velocity, as a contact must.
+     * Returns the depth undone (0 for a particle that started outside).
+     */
+    static double depenetrateWithoutVelocity(Particles p, int k, double nx, double ny, double nz, double correction, double startDepth, double h) {
+        double undone = Math.min(correction, startDepth - leftInside(startDepth, h));
+        if (!(undone > TOUCHING_DEPTH)) return 0;
+        p.prev[k] += undone * nx; p.prev[k + 1] += undone * ny; p.prev[k + 2] += undone * nz;
+        return undone;
+    }
+
+    /** Depths below this (m) are a resting contact's rounding, not a particle inside. */
+    static final double TOUCHING_DEPTH = 1e-9;
+
     public final double margin() { return margin; }
     public final double staticFriction() { return staticFriction; }
     public final double kineticFriction() { return kineticFriction; }

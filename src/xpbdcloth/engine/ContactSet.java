@@ -29,6 +29,11 @@ final class ContactSet {
     private int[] entry = new int[0];
     private Collider[] with = new Collider[0];
     private int count;
+    /** The planes' contacts are [planesFrom, planesTo) of this substep's list. */
+    private int planesFrom, planesTo;
+    /** Per particle: the last {@link #inside} call that counted it (no clearing between calls). */
+    private int[] countedIn = new int[0];
+    private int insideCalls;
 
     int count() { return count; }
     int particle(int k) { return particle[k]; }
@@ -48,7 +53,9 @@ final class ContactSet {
     void collide(Particles p, List<Sphere> spheres, List<Plane> planes, List<RigidCollider> solids, SelfCollision self, double h, Team team) {
         count = 0;
         for (int s = 0, ns = spheres.size(); s < ns; s++) spheres.get(s).findContacts(p, h, this);
+        planesFrom = count;
         for (int s = 0, ns = planes.size(); s < ns; s++) planes.get(s).findContacts(p, h, this);
+        planesTo = count;
         for (int s = 0, ns = solids.size(); s < ns; s++) solids.get(s).findContacts(p, h, this);
         if (self != null) self.findContacts(p, this, team);
     }
@@ -94,10 +101,43 @@ final class ContactSet {
     static final double TOUCHING = 1e-6;
 
     /** One Gauss–Seidel pass over the contacts. */
+    /**
+     * Every contact, then the planes' again: where a moving solid has pushed a particle into a plane (a box
+     * lowered onto cloth on the floor), the fixed plane has the last word, so the cloth is never pushed
+     * through it; it is left inside the solid instead, and counted ({@link #inside}). A plane's contact that
+     * holds does nothing the second time, so scenes without such a pinch are unchanged to the bit.
+     */
     void project(Particles p, SolverContext ctx) {
         long t0 = System.nanoTime();
         for (int k = 0; k < count; k++) with[k].project(p, entry[k], ctx.h);
+        projectPlanesAgain(p, ctx);
         projectNanos += System.nanoTime() - t0;
+    }
+
+    /** The planes' contacts once more, when other contacts came after them this sweep. */
+    void projectPlanesAgain(Particles p, SolverContext ctx) {
+        if (planesTo < count) for (int k = planesFrom; k < planesTo; k++) with[k].project(p, entry[k], ctx.h);
+    }
+
+    /** Whether contact k is with a fixed plane. */
+    boolean isPlane(int k) { return k >= planesFrom && k < planesTo; }
+
+    /**
+     * Particles now inside a collider's surface by more than a tenth of its margin (clearance below −1.1
+     * margins): caught between two colliders that close on them, where one had to give.
+     */
+    int inside(Particles p) {
+        if (countedIn.length < p.count()) countedIn = new int[p.count()];
+        insideCalls++;
+        int n = 0;
+        for (int k = 0; k < count; k++) {
+            int i = particle[k];
+            if (countedIn[i] != insideCalls && !(with[k] instanceof SelfCollision) && with[k].clearance(p, entry[k]) < -1.1 * with[k].margin) {
+                countedIn[i] = insideCalls;
+                n++;
+            }
+        }
+        return n;
     }
 
     /** Wall time spent in {@link #project(Particles, SolverContext)} since the counter was last read. */

@@ -418,6 +418,8 @@ public final class MeshCollider extends RigidCollider {
         double nx = scratch[6], ny = scratch[7], nz = scratch[8];
         int k = 3 * i;
         p.x[k] += correction * nx; p.x[k + 1] += correction * ny; p.x[k + 2] += correction * nz;
+        // The start moved out with it: the next projection of this contact undoes no more than is left.
+        contactStartDepth[j] -= Collider.depenetrateWithoutVelocity(p, k, nx, ny, nz, correction, contactStartDepth[j], h);
         // The surface's velocity at the closest point: its triangle's vertices' motion over the substep.
         int t = contactTriangle[j];
         double vx = 0, vy = 0, vz = 0;

@@ -26,6 +26,7 @@ final class PlaneCollisionConstraint {
         double dLambda = Constraint.hardDeltaLambda(C, w);
         double normalCorrection = w * dLambda; // = −C > 0
         x[k] += normalCorrection * s.nx; x[k + 1] += normalCorrection * s.ny; x[k + 2] += normalCorrection * s.nz;
+        Collider.depenetrateWithoutVelocity(p, k, s.nx, s.ny, s.nz, normalCorrection, startDepth, h);
         CoulombFriction.apply(p, i, s.nx, s.ny, s.nz, normalCorrection, 0, 0, 0, h, s.staticFriction, s.kineticFriction);
         return dLambda;
     }

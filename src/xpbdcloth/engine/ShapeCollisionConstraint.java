@@ -72,6 +72,7 @@ final class ShapeCollisionConstraint {
         double normalCorrection = -fb - Collider.leftInside(startDepth, h);
         if (normalCorrection <= 0) return;
         x[k] += normalCorrection * nx; x[k + 1] += normalCorrection * ny; x[k + 2] += normalCorrection * nz;
+        Collider.depenetrateWithoutVelocity(p, k, nx, ny, nz, normalCorrection, startDepth, h);
         // Surface velocity where the particle now touches: v + ω × (x − c).
         double rx = x[k] - s.cx, ry = x[k + 1] - s.cy, rz = x[k + 2] - s.cz;
         double vsx = s.vx + s.omegaY * rz - s.omegaZ * ry;

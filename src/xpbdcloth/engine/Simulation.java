@@ -563,6 +563,9 @@ public final class Simulation {
     /** Wall time of the last step's collide stages (finding the contacts, all substeps), ms. */
     public double collideMs() { return collideNanos / 1e6; }
 
+    /** Particles inside a collider at the end of the last step, caught where two colliders close on them (see ContactSet.inside). */
+    public int pinchedParticles() { return contacts.inside(particles); }
+
     /**
      * Wall time the last step spent on contacts, ms: finding them (hash, self-collision pairs, colliders)
      * and projecting them in every sweep. Projection is timed per sweep, not per contact, so the clock

@@ -100,8 +100,8 @@ final class Hud {
                 recording ? fmt("recording: %.4g frames per simulated second (wall-clock timings not drawn)", 1 / (xpbdcloth.scene.ObjExport.stepsPerFrame(s.dt()) * s.dt()))
                         : fmt("step %.1f ms for %.0f ms of motion (%s)   render %.1f ms   %.0f fps   %.1f kB allocated/frame", simMs, 1000 * s.dt(),
                         realTime(simMs, 1000 * s.dt(), slowMotion), renderMs, fps, bytesPerFrame / 1024),
-                fmt("particles %d   constraints %d   contacts %d touching of %d%s", sim.particles().count() * running.size(), constraints,
-                        sim.touchingContacts(), sim.contactCount(), recording ? "" : fmt("   contacts %.2f ms, constraints %.2f ms", sim.contactMs(), sim.constraintSolveMs())),
+                fmt("particles %d   constraints %d   contacts %d touching of %d%s%s", sim.particles().count() * running.size(), constraints,
+                        sim.touchingContacts(), sim.contactCount(), pinched(sim), recording ? "" : fmt("   contacts %.2f ms, constraints %.2f ms", sim.contactMs(), sim.constraintSolveMs())),
                 (s.sideBySide() ? "strain: under each cloth" : fmt("strain mean %.2f %%  max %.2f %%",
                         100 * Metrics.meanClothStrain(sim), 100 * Metrics.maxClothStrain(sim)))
                         + fmt("   KE %.2e J", Metrics.kineticEnergy(sim.particles()))
@@ -280,5 +280,11 @@ final class Hud {
             for (int k = 0; k < rows.size(); k++)
                 g.text(rows.get(k), l.help.x + l.helpColumnOf[i] * columnW + HudLayout.PAD, l.help.y + 6 + HudLayout.HELP_LINE * (l.helpRowOf[i] + k));
         }
+    }
+
+    /** ", N pinched" when colliders have closed on particles and one had to give (they are inside it), else nothing. */
+    static String pinched(Simulation sim) {
+        int n = sim.pinchedParticles();
+        return n == 0 ? "" : fmt(", %d pinched inside a collider", n);
     }
 }
