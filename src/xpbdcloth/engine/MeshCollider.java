@@ -59,7 +59,8 @@ public final class MeshCollider extends RigidCollider {
     private int[] contactParticle = new int[0], contactTriangle = new int[0];
     private double[] contactSide = new double[0], contactStartDepth = new double[0];
     private int contacts;
-    private final int[] candidates = new int[512];
+    /** Candidate triangles of one particle; grows (rarely, outside any steady state) when a query fills it. */
+    private int[] candidates = new int[512];
     /** Scratch of the collide stage and of measurements (one thread). */
     private final double[] point = new double[6], scratch = new double[9];
     /**
@@ -288,6 +289,10 @@ public final class MeshCollider extends RigidCollider {
             double hx = Math.max(ax, bx) + reach, hy = Math.max(ay, by) + reach, hz = Math.max(az, bz) + reach;
             if (lx > rx1 || hx < rx0 || ly > ry1 || hy < ry0 || lz > rz1 || hz < rz0) continue;
             int found = bvh.overlapping(lx, ly, lz, hx, hy, hz, candidates);
+            while (found == candidates.length) { // a dense mesh or a long motion: look again with room for all
+                candidates = new int[2 * candidates.length];
+                found = bvh.overlapping(lx, ly, lz, hx, hy, hz, candidates);
+            }
             double firstHit = 2, nearest = Double.MAX_VALUE, nearestAhead = (margin + REACH) * (margin + REACH);
             int hit = -1, near = -1, ahead = -1;
             for (int c = 0; c < found; c++) {
