@@ -100,9 +100,8 @@ final class ContactSet {
     /** How near (m) a particle may be to its collider's surface plus margin and count as touching it. */
     static final double TOUCHING = 1e-6;
 
-    /** One Gauss–Seidel pass over the contacts. */
     /**
-     * Every contact, then the planes' again: where a moving solid has pushed a particle into a plane (a box
+     * One Gauss–Seidel pass over the contacts: every contact, then the planes' again: where a moving solid has pushed a particle into a plane (a box
      * lowered onto cloth on the floor), the fixed plane has the last word, so the cloth is never pushed
      * through it; it is left inside the solid instead, and counted ({@link #inside}). A plane's contact that
      * holds does nothing the second time, so scenes without such a pinch are unchanged to the bit.
