@@ -14,9 +14,10 @@ import java.util.List;
  * test; it must include every particle the sweeps could push into the sphere within the substep, which a
  * particle moving farther than that in one substep's sweeps would escape (it is then caught in the next
  * substep). Order: sphere by sphere, particles ascending, the order the permanent contacts had, so
- * trajectories are unchanged bit for bit; then plane by plane, for particles within {@link #PLANE_SLACK}
- * of the surface (plus margin and their own motion); then box and capsule, for particles within reach of
- * the ball that holds the solid along its path over the substep; last the cloth's pairs with itself.
+ * trajectories are unchanged bit for bit; then box, capsule and mesh, for particles within reach of the
+ * ball (or the triangles) that hold the solid along its path over the substep; then the cloth's pairs
+ * with itself; last plane by plane, for particles within {@link #PLANE_SLACK} of the surface (plus margin
+ * and their own motion): a fixed plane has the last word in every sweep.
  */
 final class ContactSet {
     /** Candidate distance beyond the surface, as a fraction of the sphere's radius. */
@@ -29,8 +30,6 @@ final class ContactSet {
     private int[] entry = new int[0];
     private Collider[] with = new Collider[0];
     private int count;
-    /** The planes' contacts are [planesFrom, planesTo) of this substep's list. */
-    private int planesFrom, planesTo;
     /** Per particle: the last {@link #inside} call that counted it (no clearing between calls). */
     private int[] countedIn = new int[0];
     private int insideCalls;
@@ -53,11 +52,10 @@ final class ContactSet {
     void collide(Particles p, List<Sphere> spheres, List<Plane> planes, List<RigidCollider> solids, SelfCollision self, double h, Team team) {
         count = 0;
         for (int s = 0, ns = spheres.size(); s < ns; s++) spheres.get(s).findContacts(p, h, this);
-        planesFrom = count;
-        for (int s = 0, ns = planes.size(); s < ns; s++) planes.get(s).findContacts(p, h, this);
-        planesTo = count;
         for (int s = 0, ns = solids.size(); s < ns; s++) solids.get(s).findContacts(p, h, this);
         if (self != null) self.findContacts(p, this, team);
+        // The fixed planes last, so they have the last word in every sweep (see project).
+        for (int s = 0, ns = planes.size(); s < ns; s++) planes.get(s).findContacts(p, h, this);
     }
 
     /** A candidate: particle i against collider c. */
@@ -101,25 +99,16 @@ final class ContactSet {
     static final double TOUCHING = 1e-6;
 
     /**
-     * One Gauss–Seidel pass over the contacts: every contact, then the planes' again: where a moving solid has pushed a particle into a plane (a box
-     * lowered onto cloth on the floor), the fixed plane has the last word, so the cloth is never pushed
-     * through it; it is left inside the solid instead, and counted ({@link #inside}). A plane's contact that
-     * holds does nothing the second time, so scenes without such a pinch are unchanged to the bit.
+     * One Gauss–Seidel pass over the contacts, the fixed planes' last: where a moving solid (or the cloth's
+     * own pairs) has pushed a particle into a plane (a box lowered onto cloth on the floor), the plane has
+     * the last word, so the cloth is never pushed through it; it is left inside the solid instead, and
+     * counted ({@link #inside}).
      */
     void project(Particles p, SolverContext ctx) {
         long t0 = System.nanoTime();
         for (int k = 0; k < count; k++) with[k].project(p, entry[k], ctx.h);
-        projectPlanesAgain(p, ctx);
         projectNanos += System.nanoTime() - t0;
     }
-
-    /** The planes' contacts once more, when other contacts came after them this sweep. */
-    void projectPlanesAgain(Particles p, SolverContext ctx) {
-        if (planesTo < count) for (int k = planesFrom; k < planesTo; k++) with[k].project(p, entry[k], ctx.h);
-    }
-
-    /** Whether contact k is with a fixed plane. */
-    boolean isPlane(int k) { return k >= planesFrom && k < planesTo; }
 
     /**
      * Particles now inside a collider's surface by more than a tenth of its margin (clearance below −1.1

@@ -194,6 +194,8 @@ public final class MeshCollider extends RigidCollider {
 
     @Override void advance(double t, double h) {
         super.advance(t, h);
+        // A still mesh (no frames, no spin, its centre where it was) keeps its vertices, normals and boxes.
+        if (frames == null && omegaX == 0 && omegaY == 0 && omegaZ == 0 && cx == pcx && cy == pcy && cz == pcz) return;
         double[] s = start; start = now; now = s;
         s = faceStart; faceStart = faceNow; faceNow = s;
         s = vertexStart; vertexStart = vertexNow; vertexNow = s;

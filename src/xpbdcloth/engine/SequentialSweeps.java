@@ -41,7 +41,6 @@ final class SequentialSweeps implements SolveStage {
             contacts.project(particles, ctx, k);
             probe.check(contacts.particle(k), ConstraintFamily.COLLISION);
         }
-        contacts.projectPlanesAgain(particles, ctx);
     }
 
     @Override public SolveStage probed(StepProbe probe) {

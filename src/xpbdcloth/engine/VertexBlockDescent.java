@@ -582,9 +582,6 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
             final Collider with = contacts.with(k);
             if (!(with instanceof SelfCollision)) contacts.projectOne(particles, k, v, ctx.h);
         }
-        // The fixed planes' last (see ContactSet.project): a moving solid never pushes the particle through one.
-        for (int e = contactStart[v], end = contactStart[v + 1]; e < end; e++)
-            if (contacts.isPlane(contactOf[e]) && end - contactStart[v] > 1) contacts.projectOne(particles, contactOf[e], v, ctx.h);
     }
 
     /** The same solve, the state checked after every particle's step (which then names the energies' first family). */

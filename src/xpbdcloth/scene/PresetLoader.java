@@ -372,22 +372,13 @@ public final class PresetLoader {
             object(m, Set.of("file", "weld", "scale", "rotation", "translation"));
             Node f = required(m, "file");
             String name = string(f);
-            Node w = optional(m, "weld"), sc = optional(m, "scale"), r = optional(m, "rotation"), t = optional(m, "translation");
+            Node w = optional(m, "weld");
             double weld = w == null ? 1e-6 : number(w, Limits.WELD);
-            double scale = sc == null ? 1 : number(sc, Limits.MESH_SCALE);
-            double[] rotation = r == null ? new double[3] : vector(r, Limits.ROTATION);
-            double[] translation = t == null ? new double[3] : vector(t, Limits.POSITION);
-            ClothMesh mesh;
-            try {
-                mesh = meshes.load(name, weld);
-            } catch (MeshFileException e) {
-                throw fail(f.path, e.getMessage());
-            } catch (IllegalArgumentException e) {
-                throw fail(f.path, name + ": " + e.getMessage());
-            }
+            Placement at = placement(m);
+            ClothMesh mesh = fromFile(f, name, () -> meshes.load(name, weld));
             if (!Limits.MESH_VERTICES.contains(mesh.vertexCount()))
                 throw fail(f.path, name + ": must have " + Limits.MESH_VERTICES.text() + " vertices after welding, had " + mesh.vertexCount());
-            mesh = mesh.transformed(scale, rotation, translation);
+            mesh = mesh.transformed(at.scale, at.rotation, at.translation);
             for (int i = 0; i < mesh.vertexCount(); i++)
                 if (!Limits.POSITION.contains(mesh.x(i)) || !Limits.POSITION.contains(mesh.y(i)) || !Limits.POSITION.contains(mesh.z(i)))
                     throw fail(m.path, "vertex " + i + " lands at (" + mesh.x(i) + ", " + mesh.y(i) + ", " + mesh.z(i) + "), outside " + Limits.POSITION.text() + " m");
@@ -664,6 +655,32 @@ public final class PresetLoader {
                     number(required(n, "radius"), Limits.SPHERE_RADIUS), margin(n), mus, muk, omega, path);
         }
 
+        /** Where a mesh file is put in the scene: a uniform scale, then rotations about x, y, z (degrees), then a move. */
+        final class Placement {
+            final double scale;
+            final double[] rotation, translation;
+
+            Placement(double scale, double[] rotation, double[] translation) { this.scale = scale; this.rotation = rotation; this.translation = translation; }
+        }
+
+        /** The placement fields of n ("scale", "rotation", "translation"), each optional. */
+        Placement placement(Node n) {
+            Node sc = optional(n, "scale"), r = optional(n, "rotation"), t = optional(n, "translation");
+            return new Placement(sc == null ? 1 : number(sc, Limits.MESH_SCALE), r == null ? new double[3] : vector(r, Limits.ROTATION),
+                    t == null ? new double[3] : vector(t, Limits.POSITION));
+        }
+
+        /** What {@code read} makes of the file a field names, its problems reported at that field. */
+        <T> T fromFile(Node field, String name, java.util.function.Supplier<T> read) {
+            try {
+                return read.get();
+            } catch (MeshFileException e) {
+                throw fail(field.path, e.getMessage());
+            } catch (IllegalArgumentException e) {
+                throw fail(field.path, name + ": " + e.getMessage());
+            }
+        }
+
         /**
          * A triangle mesh to collide with, from a file (OBJ, USD text, or a folder of OBJ frames), placed by
          * scale, rotation and translation; still, animated by its frames (fps, loop), and moved rigidly by a
@@ -673,30 +690,21 @@ public final class PresetLoader {
             object(n, Set.of("type", "file", "fps", "loop", "scale", "rotation", "translation", "margin", "staticFriction", "kineticFriction", "angularVelocity", "path"));
             Node f = required(n, "file");
             String name = string(f);
-            Node fp = optional(n, "fps"), lp = optional(n, "loop"), sc = optional(n, "scale"), r = optional(n, "rotation"), t = optional(n, "translation");
+            Node fp = optional(n, "fps"), lp = optional(n, "loop");
             double fps = fp == null ? Double.NaN : number(fp, Limits.FRAME_RATE);
             boolean loop = lp != null && bool(lp);
-            double scale = sc == null ? 1 : number(sc, Limits.MESH_SCALE);
-            double[] rotation = r == null ? new double[3] : vector(r, Limits.ROTATION);
-            double[] translation = t == null ? new double[3] : vector(t, Limits.POSITION);
+            Placement at = placement(n);
             double mus = number(required(n, "staticFriction"), Limits.FRICTION);
             double muk = number(required(n, "kineticFriction"), Limits.FRICTION);
             Node w = optional(n, "angularVelocity");
             double[] omega = w == null ? new double[3] : vector(w, Limits.ANGULAR_VELOCITY);
             Node pn = optional(n, "path");
             Preset.PathSpec path = pn == null ? new Preset.PathSpec("fixed", new double[3], new double[3], 0, 0) : path(pn);
-            BodyMesh body;
-            try {
-                body = meshes.body(name, fps);
-            } catch (MeshFileException e) {
-                throw fail(f.path, e.getMessage());
-            } catch (IllegalArgumentException e) {
-                throw fail(f.path, name + ": " + e.getMessage());
-            }
+            BodyMesh body = fromFile(f, name, () -> meshes.body(name, fps));
             if (body.animated() && fp != null) body = body.at(fps);
             if (!body.animated() && fp != null) throw fail(fp.path, "is the rate of an animated body's frames; " + name + " is still (one shape)");
             if (!body.animated() && lp != null) throw fail(lp.path, "loops an animated body's frames; " + name + " is still (one shape)");
-            body = body.transformed(scale, rotation, translation);
+            body = body.transformed(at.scale, at.rotation, at.translation);
             double[][] shapes = body.animated() ? body.frames : new double[][] {body.vertices};
             for (int k = 0; k < shapes.length; k++)
                 for (int i = 0; i < shapes[k].length; i++)

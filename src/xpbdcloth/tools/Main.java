@@ -178,16 +178,21 @@ public final class Main implements Callable<Integer> {
         private int recordUsd() throws java.io.IOException {
             refuseImagesAndTwoCloths("--usd");
             xpbdcloth.scene.Preset preset = PresetLoader.byNameOrPath(sketch.scene);
-            double dt = preset.solver.dt;
-            int steps = fps == null ? xpbdcloth.scene.ObjExport.stepsPerFrame(dt) : xpbdcloth.scene.ObjExport.stepsPerFrame(dt, fps);
-            double rate = 1 / (steps * dt);
-            System.out.printf(java.util.Locale.ROOT, "recording %d frames of %s into %s: %.6g frames per second of simulated time (a frame every %d step%s of %.4g ms)%n",
-                    frames, sketch.scene, usd, rate, steps, steps == 1 ? "" : "s", 1000 * dt);
+            int steps = announce(preset, "frames", usd);
             long t0 = System.nanoTime();
             int n = xpbdcloth.usd.UsdRecording.record(preset, frames, usd.toPath(), steps);
             System.out.printf(java.util.Locale.ROOT, "wrote %s: %d time codes (0 is the start), %.1f MB, in %.1f s%n",
                     usd, n, java.nio.file.Files.size(usd.toPath()) / 1e6, (System.nanoTime() - t0) / 1e9);
             return 0;
+        }
+
+        /** Steps per recorded frame at --fps (or the scene's own rate), having said what is recorded where and at what rate. */
+        private int announce(xpbdcloth.scene.Preset preset, String what, File into) {
+            double dt = preset.solver.dt;
+            int steps = fps == null ? xpbdcloth.scene.ObjExport.stepsPerFrame(dt) : xpbdcloth.scene.ObjExport.stepsPerFrame(dt, fps);
+            System.out.printf(java.util.Locale.ROOT, "recording %d %s of %s into %s: %.6g frames per second of simulated time (a frame every %d step%s of %.4g ms)%n",
+                    frames, what, sketch.scene, into, 1 / (steps * dt), steps, steps == 1 ? "" : "s", 1000 * dt);
+            return steps;
         }
 
         private void refuseImagesAndTwoCloths(String option) {
@@ -199,15 +204,11 @@ public final class Main implements Callable<Integer> {
         private int recordObj() throws java.io.IOException {
             refuseImagesAndTwoCloths("--obj");
             xpbdcloth.scene.Preset preset = PresetLoader.byNameOrPath(sketch.scene);
-            double dt = preset.solver.dt;
-            int steps = fps == null ? xpbdcloth.scene.ObjExport.stepsPerFrame(dt) : xpbdcloth.scene.ObjExport.stepsPerFrame(dt, fps);
-            double rate = 1 / (steps * dt);
-            System.out.printf(java.util.Locale.ROOT, "recording %d OBJ frames of %s into %s: %.6g frames per second of simulated time (a frame every %d step%s of %.4g ms)%n",
-                    frames, sketch.scene, obj, rate, steps, steps == 1 ? "" : "s", 1000 * dt);
+            int steps = announce(preset, "OBJ frames", obj);
             long t0 = System.nanoTime();
             int n = xpbdcloth.scene.ObjExport.recordSequence(preset, frames, obj.toPath(), steps);
             System.out.printf(java.util.Locale.ROOT, "wrote %d OBJ frames (%d vertices each; import at %.6g fps to play in real time) in %.1f s%n",
-                    n, preset.cloth.isMesh() ? preset.cloth.mesh.vertexCount() : preset.cloth.columns * preset.cloth.rows, rate, (System.nanoTime() - t0) / 1e9);
+                    n, preset.cloth.isMesh() ? preset.cloth.mesh.vertexCount() : preset.cloth.columns * preset.cloth.rows, 1 / (steps * preset.solver.dt), (System.nanoTime() - t0) / 1e9);
             return 0;
         }
     }

@@ -62,7 +62,7 @@ public final class UsdRecording implements Closeable {
     private final List<Samples> streams = new ArrayList<>();
     private final Samples points, normals, extent;
     private final List<ColliderPrim> colliders = new ArrayList<>();
-    private final double[] normal, rotation = new double[9];
+    private final double[] normal, rotation = new double[9], lo = new double[3], hi = new double[3];
     private final StringBuilder line = new StringBuilder(1 << 16);
     private int frames;
     private boolean closed;
@@ -157,7 +157,8 @@ public final class UsdRecording implements Closeable {
             close(normals);
         }
         open(extent);
-        double[] lo = {Double.MAX_VALUE, Double.MAX_VALUE, Double.MAX_VALUE}, hi = {-Double.MAX_VALUE, -Double.MAX_VALUE, -Double.MAX_VALUE};
+        java.util.Arrays.fill(lo, Double.MAX_VALUE);
+        java.util.Arrays.fill(hi, -Double.MAX_VALUE);
         for (int i = 0; i < x.length; i++) { lo[i % 3] = Math.min(lo[i % 3], x[i]); hi[i % 3] = Math.max(hi[i % 3], x[i]); }
         tuple(lo, 0, 3, true).append(", ");
         tuple(hi, 0, 3, true);

@@ -31,6 +31,16 @@ class MeshColliderTest {
         return out;
     }
 
+    /**
+     * A horizontal square cloth of n² particles, width w, centred at (x, y, z), 0.2 kg/m², all three spring
+     * families, at the shipped scenes' settings (2 sweeps × 10 substeps of a 20 ms step).
+     */
+    static Simulation lyingCloth(int n, double w, double x, double y, double z, SolverType solver) {
+        Cloth c = new ClothBuilder().resolution(n, n).size(w, w).plane(ClothBuilder.Plane.HORIZONTAL).origin(x, y, z).arealDensity(0.2)
+                .family(ConstraintFamily.STRUCTURAL, 1, 1e-6).family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2).build();
+        return c.simulation(new SolverSettings().iterations(2).substeps(10).timestep(0.02).solver(solver));
+    }
+
     static MeshCollider box(double cx, double cy, double cz, double ex, double ey, double ez, double muS, double muK) {
         double[][] m = boxMesh(cx, cy, cz, ex, ey, ez);
         return new MeshCollider(SpherePath.fixed(0, 0, 0), m[0], ints(m[1]), null, 0, false, MARGIN, muS, muK);
@@ -72,31 +82,21 @@ class MeshColliderTest {
     void onATiltedMeshTheClothObeysCoulombAsOnThePlane() {
         double theta = Math.atan(0.7);
         double plane = PlaneContactTest.slideDownSlope(theta, 0.5, 0.3, 1.0);
-        double mesh = slideDownMesh(theta, 0.5, 0.3, 1.0);
-        double stays = slideDownMesh(Math.atan(0.4), 0.5, 0.3, 2.0);
+        double mesh = PlaneContactTest.slideDownSlope(theta, 0.5, 0.3, 1.0, MESH);
+        double stays = PlaneContactTest.slideDownSlope(Math.atan(0.4), 0.5, 0.3, 2.0, MESH);
         System.out.printf("tilted mesh: tan θ = 0.7 slid %.4f m (plane %.4f m); tan θ = 0.4 moved %.2e m%n", mesh, plane, stays);
         assertEquals(plane, mesh, 0.01 * plane);
         assertEquals(0, stays, 1e-3);
     }
 
-    static double slideDownMesh(double theta, double muS, double muK, double seconds) {
-        Cloth c = new ClothBuilder().resolution(4, 4).size(0.15, 0.15).plane(ClothBuilder.Plane.HORIZONTAL).origin(0, 0, 0).arealDensity(0.2)
-                .family(ConstraintFamily.STRUCTURAL, 1, 1e-6).family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2).build();
-        Particles p = c.particles();
-        double nx = Math.sin(theta), ny = Math.cos(theta), tx = Math.cos(theta), ty = -Math.sin(theta);
-        for (int i = 0; i < p.count(); i++) {
-            double u = p.x(i), v = p.z(i);
-            p.setPosition(i, u * tx + MARGIN * nx, u * ty + MARGIN * ny, v);
-        }
-        Simulation sim = c.simulation(new SolverSettings().iterations(2).substeps(10).timestep(0.02));
+    /** Two triangles 10 m wide through the origin, tilted by θ like the plane. */
+    static final PlaneContactTest.Slope MESH = (sim, theta, muS, muK) -> {
+        double tx = Math.cos(theta), ty = -Math.sin(theta);
         double[] v = new double[12];
         double[][] corners = {{-5, -5}, {5, -5}, {5, 5}, {-5, 5}};
         for (int k = 0; k < 4; k++) { v[3 * k] = corners[k][0] * tx; v[3 * k + 1] = corners[k][0] * ty; v[3 * k + 2] = corners[k][1]; }
         sim.add(new MeshCollider(SpherePath.fixed(0, 0, 0), v, new int[] {0, 2, 1, 0, 3, 2}, null, 0, false, MARGIN, muS, muK));
-        double start = PlaneContactTest.centroidAlong(p, tx, ty);
-        for (int s = 0, steps = (int) Math.round(seconds / 0.02); s < steps; s++) sim.step();
-        return PlaneContactTest.centroidAlong(p, tx, ty) - start;
-    }
+    };
 
     /**
      * A 32² cloth thrown down at 10 m/s onto a mesh plate 1 cm thick (a closed box mesh, half extents
@@ -106,42 +106,21 @@ class MeshColliderTest {
      */
     @Test
     void clothThrownAtTenMetresASecondGoesThroughNeitherAThinPlateNorASheet() {
-        assertEquals(0, throughThePlate(box(0, 0.5, 0, 0.4, 0.005, 0.4, 0.5, 0.4), 0.505, 0.495));
+        int[] plate = TunnellingTest.thrownAtABoard(sim -> sim.add(box(0, 0.5, 0, 0.4, 0.005, 0.4, 0.5, 0.4)), 0.505, 0.495);
         double[] v = {-0.4, 0.5, -0.4, 0.4, 0.5, -0.4, 0.4, 0.5, 0.4, -0.4, 0.5, 0.4};
-        assertEquals(0, throughThePlate(new MeshCollider(SpherePath.fixed(0, 0, 0), v, new int[] {0, 2, 1, 0, 3, 2}, null, 0, false, MARGIN, 0.5, 0.4), 0.5, 0.5));
-    }
-
-    static int throughThePlate(MeshCollider plate, double top, double bottom) {
-        Cloth c = new ClothBuilder().resolution(32, 32).size(1, 1).plane(ClothBuilder.Plane.HORIZONTAL).origin(0, 0.8, 0).arealDensity(0.2)
-                .family(ConstraintFamily.STRUCTURAL, 1, 1e-6).family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2).build();
-        Simulation sim = c.simulation(new SolverSettings().iterations(2).substeps(1).timestep(0.002));
-        sim.add(plate);
-        Particles p = c.particles();
-        for (int i = 0; i < p.count(); i++) p.setVelocity(i, 0, -10, 0);
-        int[] side = new int[p.count()];
-        int inside = 0, crossed = 0;
-        for (int substep = 0; substep < 500; substep++) {
-            sim.step();
-            for (int i = 0; i < p.count(); i++) {
-                boolean over = Math.abs(p.x(i)) < 0.4 && Math.abs(p.z(i)) < 0.4;
-                int now = !over ? 0 : p.y(i) >= top ? 1 : p.y(i) <= bottom ? -1 : 2;
-                if (now == 2 || (top == bottom && over && Math.abs(p.y(i) - top) < MARGIN * 0.9)) inside++;
-                if (now != 0 && side[i] != 0 && now != side[i]) crossed++;
-                side[i] = now == 2 ? side[i] : now;
-            }
-        }
-        System.out.printf("thrown at 10 m/s onto a %s: %d particle-substeps inside, %d crossings%n", top == bottom ? "sheet" : "1 cm plate", inside, crossed);
-        return inside + crossed;
+        int[] sheet = TunnellingTest.thrownAtABoard(sim -> sim.add(new MeshCollider(SpherePath.fixed(0, 0, 0), v, new int[] {0, 2, 1, 0, 3, 2}, null, 0, false, MARGIN, 0.5, 0.4)), 0.5, 0.5);
+        System.out.printf("thrown at 10 m/s onto a 1 cm mesh plate: %d particle-substeps inside, %d crossings; onto a sheet: %d within 0.9 margin, %d crossings%n",
+                plate[0], plate[1], sheet[0], sheet[1]);
+        assertArrayEquals(new int[] {0, 0}, plate);
+        assertArrayEquals(new int[] {0, 0}, sheet);
     }
 
     /** A 32² cloth dropped from 5 cm onto a mesh table top for 10 s comes to rest: KE below 1e-6 J, none below the top's margin. */
     @Test
     void aClothOnAMeshTableComesToRestWithoutJitter() {
-        Cloth c = new ClothBuilder().resolution(32, 32).size(1, 1).plane(ClothBuilder.Plane.HORIZONTAL).origin(0, 0.55, 0).arealDensity(0.2)
-                .family(ConstraintFamily.STRUCTURAL, 1, 1e-6).family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2).build();
-        Simulation sim = c.simulation(new SolverSettings().iterations(2).substeps(10).timestep(0.02));
+        Simulation sim = lyingCloth(32, 1, 0, 0.55, 0, SolverType.GAUSS_SEIDEL);
         sim.add(box(0, 0.25, 0, 0.6, 0.25, 0.6, 0.5, 0.4));
-        Particles p = c.particles();
+        Particles p = sim.particles();
         for (int s = 0; s < 500; s++) sim.step();
         double ke = Metrics.kineticEnergy(p), lowest = Double.MAX_VALUE;
         for (int i = 0; i < p.count(); i++) lowest = Math.min(lowest, p.y(i));
@@ -188,11 +167,9 @@ class MeshColliderTest {
     void noParticleEndsAStepInsideAClosedMesh() {
         MeshCollider ball = uvSphere(0, 0.5, 0, 0.3, 24, 48, 0.5, 0.4);
         assertTrue(ball.closed());
-        Cloth c = new ClothBuilder().resolution(32, 32).size(1, 1).plane(ClothBuilder.Plane.HORIZONTAL).origin(0.05, 1.0, 0.03).arealDensity(0.2)
-                .family(ConstraintFamily.STRUCTURAL, 1, 1e-6).family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2).build();
-        Simulation sim = c.simulation(new SolverSettings().iterations(2).substeps(10).timestep(0.02));
+        Simulation sim = lyingCloth(32, 1, 0.05, 1.0, 0.03, SolverType.GAUSS_SEIDEL);
         sim.add(ball);
-        Particles p = c.particles();
+        Particles p = sim.particles();
         double closest = Double.MAX_VALUE;
         int touching = 0;
         for (int s = 0; s < 150; s++) {
@@ -218,11 +195,9 @@ class MeshColliderTest {
         double[][] low = boxMesh(0, 0.5, 0, 0.4, 0.005, 0.4), high = boxMesh(0, 0.8, 0, 0.4, 0.005, 0.4);
         MeshCollider plate = new MeshCollider(SpherePath.fixed(0, 0, 0), low[0], ints(low[1]), new double[][] {low[0], high[0]}, 1, false, MARGIN, 0.5, 0.4);
         assertTrue(plate.animated());
-        Cloth c = new ClothBuilder().resolution(16, 16).size(0.6, 0.6).plane(ClothBuilder.Plane.HORIZONTAL).origin(0, 0.51, 0).arealDensity(0.2)
-                .family(ConstraintFamily.STRUCTURAL, 1, 1e-6).family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2).build();
-        Simulation sim = c.simulation(new SolverSettings().iterations(2).substeps(10).timestep(0.02));
+        Simulation sim = lyingCloth(16, 0.6, 0, 0.51, 0, SolverType.GAUSS_SEIDEL);
         sim.add(plate);
-        Particles p = c.particles();
+        Particles p = sim.particles();
         double lowest = Double.MAX_VALUE;
         for (int s = 0; s < 75; s++) {
             sim.step();

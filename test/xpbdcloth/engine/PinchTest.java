@@ -19,9 +19,7 @@ class PinchTest {
      * way to nothing).
      */
     static double[] lowerOnto(boolean mesh, SolverType solver) {
-        Cloth c = new ClothBuilder().resolution(24, 24).size(0.8, 0.8).plane(ClothBuilder.Plane.HORIZONTAL).origin(0, MARGIN, 0).arealDensity(0.2)
-                .family(ConstraintFamily.STRUCTURAL, 1, 1e-6).family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2).build();
-        Simulation sim = c.simulation(new SolverSettings().iterations(2).substeps(10).timestep(0.02).solver(solver));
+        Simulation sim = MeshColliderTest.lyingCloth(24, 0.8, 0, MARGIN, 0, solver);
         sim.add(Plane.floor(0, MARGIN, 0.5, 0.4));
         SpherePath down = SpherePath.linear(0, 0.3, 0, 0, -1, 0);
         if (mesh) {
@@ -30,7 +28,7 @@ class PinchTest {
         } else {
             sim.add(new Box(down, new double[] {0.6, 0.1, 0.6}, new double[3], MARGIN, 0.5, 0.4));
         }
-        Particles p = c.particles();
+        Particles p = sim.particles();
         double lowest = Double.MAX_VALUE, pinched = 0;
         for (int s = 0; s < 50; s++) { // 1 s: the box from 0.3 m down to −0.7 m, through the floor
             sim.step();

@@ -8,16 +8,26 @@ import org.junit.jupiter.api.Test;
 class PlaneContactTest {
     static final double MARGIN = 0.005;
 
+    /** What the cloth lies on: a surface through the origin tilted by θ about z, its normal (sin θ, cos θ, 0). */
+    interface Slope {
+        void addTo(Simulation sim, double theta, double staticFriction, double kineticFriction);
+    }
+
+    static final Slope PLANE = (sim, theta, muS, muK) -> sim.add(new Plane(new double[] {0, 0, 0}, new double[] {Math.sin(theta), Math.cos(theta), 0}, MARGIN, muS, muK));
+
+    /** The top face of a box 10 m wide and 20 cm thick: centre half a thickness below it along −n, local +y turned onto n. */
+    static final Slope BOX = (sim, theta, muS, muK) -> sim.add(new Box(SpherePath.fixed(-0.1 * Math.sin(theta), -0.1 * Math.cos(theta), 0),
+            new double[] {5, 0.1, 5}, new double[] {0, 0, -Math.toDegrees(theta)}, MARGIN, muS, muK));
+
     /**
      * A 4 × 4 cloth (15 cm square, all families) lying on a slope tilted by θ, with μₛ and μₖ: the
      * returned value is its centroid's travel down the slope after {@code seconds}.
      */
     static double slideDownSlope(double theta, double staticFriction, double kineticFriction, double seconds) {
-        return slideDownSlope(theta, staticFriction, kineticFriction, seconds, false);
+        return slideDownSlope(theta, staticFriction, kineticFriction, seconds, PLANE);
     }
 
-    /** The same on the top face of a box 10 m wide and 20 cm thick, turned by θ, when {@code onBox}. */
-    static double slideDownSlope(double theta, double staticFriction, double kineticFriction, double seconds, boolean onBox) {
+    static double slideDownSlope(double theta, double staticFriction, double kineticFriction, double seconds, Slope slope) {
         Cloth c = new ClothBuilder().resolution(4, 4).size(0.15, 0.15).plane(ClothBuilder.Plane.HORIZONTAL).origin(0, 0, 0).arealDensity(0.2)
                 .family(ConstraintFamily.STRUCTURAL, 1, 1e-6).family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2).build();
         Particles p = c.particles();
@@ -28,9 +38,7 @@ class PlaneContactTest {
             p.setPosition(i, u * tx + MARGIN * nx, u * ty + MARGIN * ny, v);
         }
         Simulation sim = c.simulation(new SolverSettings().iterations(2).substeps(10).timestep(0.02));
-        if (onBox) // top face through the origin: centre half a thickness below it along −n; local +y turned onto n
-            sim.add(new Box(SpherePath.fixed(-0.1 * nx, -0.1 * ny, 0), new double[] {5, 0.1, 5}, new double[] {0, 0, -Math.toDegrees(theta)}, MARGIN, staticFriction, kineticFriction));
-        else sim.add(new Plane(new double[] {0, 0, 0}, new double[] {nx, ny, 0}, MARGIN, staticFriction, kineticFriction));
+        slope.addTo(sim, theta, staticFriction, kineticFriction);
         double start = centroidAlong(p, tx, ty);
         int steps = (int) Math.round(seconds / 0.02);
         for (int s = 0; s < steps; s++) sim.step();
@@ -70,9 +78,9 @@ class PlaneContactTest {
     /** Coulomb's law on both sides of the threshold holds on a tilted box's face as on the plane (shared friction, the box's own contact). */
     @Test
     void onATiltedBoxTheClothObeysCoulombToo() {
-        double stays = slideDownSlope(Math.atan(0.4), 0.5, 0.3, 2.0, true);
+        double stays = slideDownSlope(Math.atan(0.4), 0.5, 0.3, 2.0, BOX);
         double theta = Math.atan(0.7), a = 9.81 * (Math.sin(theta) - 0.3 * Math.cos(theta));
-        double slides = slideDownSlope(theta, 0.5, 0.3, 1.0, true);
+        double slides = slideDownSlope(theta, 0.5, 0.3, 1.0, BOX);
         System.out.printf("tilted box: tan θ = 0.4 < μs moved %.2e m in 2 s; tan θ = 0.7 slid %.4f m in 1 s, Coulomb %.4f m%n", stays, slides, a / 2);
         assertEquals(0, stays, 1e-3);
         assertEquals(a / 2, slides, 0.02 * a / 2);

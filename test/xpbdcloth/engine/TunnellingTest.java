@@ -65,27 +65,37 @@ class TunnellingTest {
      */
     @Test
     void clothFallingFastOntoAThinBoardNeverGoesThroughIt() {
+        int[] r = thrownAtABoard(sim -> sim.add(new Box(SpherePath.fixed(0, 0.5, 0), new double[] {0.4, 0.005, 0.4}, new double[3], 0.005, 0.5, 0.4)), 0.505, 0.495);
+        System.out.printf("cloth at 10 m/s onto a 1 cm board: %d particle-substeps inside it, %d crossings through it%n", r[0], r[1]);
+        assertEquals(0, r[0], "inside the board");
+        assertEquals(0, r[1], "through the board");
+    }
+
+    /**
+     * A horizontal 32² cloth thrown down at 10 m/s, substep by substep at 2 ms, for 1 s at a board over
+     * |x|, |z| &lt; 0.4 whose faces are at y = top and y = bottom (equal for a sheet of no thickness, whose
+     * margin is 5 mm): returns {particle-substeps over the board inside it (for a sheet: within 0.9 of the
+     * margin), crossings from above it to below it or back, counted across any substeps spent inside}.
+     */
+    static int[] thrownAtABoard(java.util.function.Consumer<Simulation> board, double top, double bottom) {
         Cloth c = new ClothBuilder().resolution(32, 32).size(1, 1).plane(ClothBuilder.Plane.HORIZONTAL).origin(0, 0.8, 0).arealDensity(0.2)
                 .family(ConstraintFamily.STRUCTURAL, 1, 1e-6).family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2).build();
         Simulation sim = c.simulation(new SolverSettings().iterations(2).substeps(1).timestep(0.002));
-        double top = 0.505, bottom = 0.495;
-        sim.add(new Box(SpherePath.fixed(0, 0.5, 0), new double[] {0.4, 0.005, 0.4}, new double[3], 0.005, 0.5, 0.4));
+        board.accept(sim);
         Particles p = c.particles();
         for (int i = 0; i < p.count(); i++) p.setVelocity(i, 0, -10, 0);
-        int[] side = new int[p.count()]; // +1 over the board above it, -1 under it, 0 elsewhere
+        int[] side = new int[p.count()]; // +1 over the board above it, -1 under it, 0 elsewhere or not yet seen
         int inside = 0, crossed = 0;
         for (int substep = 0; substep < 500; substep++) {
             sim.step();
             for (int i = 0; i < p.count(); i++) {
                 boolean over = Math.abs(p.x(i)) < 0.4 && Math.abs(p.z(i)) < 0.4;
                 int now = !over ? 0 : p.y(i) >= top ? 1 : p.y(i) <= bottom ? -1 : 2;
-                if (now == 2) inside++;
-                if (now * side[i] == -1) crossed++;
-                side[i] = now == 2 ? 0 : now;
+                if (now == 2 || (top == bottom && over && Math.abs(p.y(i) - top) < 0.9 * 0.005)) inside++;
+                if (now != 0 && now != 2 && side[i] != 0 && now != side[i]) crossed++;
+                side[i] = now == 2 ? side[i] : now;
             }
         }
-        System.out.printf("cloth at 10 m/s onto a 1 cm board: %d particle-substeps inside it, %d crossings through it%n", inside, crossed);
-        assertEquals(0, inside, "inside the board");
-        assertEquals(0, crossed, "through the board");
+        return new int[] {inside, crossed};
     }
 }
