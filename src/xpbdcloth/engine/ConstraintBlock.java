@@ -21,6 +21,8 @@ import java.util.Arrays;
  * differ, is {@link Constraint#deltaLambda}.
  */
 public abstract class ConstraintBlock {
+    /** The most particles one constraint takes: a {@link BendingPatch} row's twelve. */
+    public static final int MAX_ARITY = BendingPatch.MAX_SLOTS;
     private final ConstraintFamily family;
     private final int arity;
     /** Rows solved together in one projection (a unit): 1, or a triangle's three membrane rows, a bend's three components. */
@@ -57,6 +59,8 @@ public abstract class ConstraintBlock {
     public final int arity() { return arity; }
     /** Rows projected together ({@link #project} takes a unit): 1 for a scalar constraint. */
     public final int rowsPerUnit() { return rowsPerUnit; }
+    /** Whether every C of the block is linear in the positions (∇C constant): its Hessian is ∇C∇Cᵀ exactly. */
+    public boolean isLinear() { return false; }
     /** Units in the block: what a sweep projects, one at a time; a unit's rows are consecutive and share particles. */
     public final int units() { return count / rowsPerUnit; }
     /** The k-th particle (0 ≤ k &lt; arity) of constraint i. */

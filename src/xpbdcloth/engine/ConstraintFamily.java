@@ -10,7 +10,7 @@ public enum ConstraintFamily {
     BEND,
     /** Orthotropic membrane energy per triangle, from a fabric's moduli ({@link MembraneBlock}). */
     MEMBRANE,
-    /** Dihedral angle bending on interior edges, from a bending stiffness ({@link DihedralBlock}). */
+    /** Bending from a bending stiffness: {@link BendingPatch} rows on a flat rest, {@link DihedralBlock} hinges on a bent one. */
     DIHEDRAL,
     /** Long-range attachments to the nearest pin ({@link TetherBlock}). */
     TETHER,

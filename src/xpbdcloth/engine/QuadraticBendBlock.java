@@ -22,21 +22,44 @@ import java.util.Arrays;
  * folded flat pushes back no harder than one folded at 90°), which a cloth's fold spread over several
  * edges never reaches. Rotations leave C unchanged (Σ c_k = 0), so the energy is that of the bend alone.
  * It needs a flat rest: {@link #isFlat} tells, and a hinge bent at rest stays a {@link DihedralBlock}.
+ * A block may hold {@link BendingPatch} rows instead (up to twelve particles, three rows per triangle), the same
+ * kind of constraint, C linear in x, with an energy that does not depend on the triangulation.
  * Degenerate case: a zero-height triangle has no dependency; it is refused when added.
  */
 public final class QuadraticBendBlock extends ConstraintBlock {
-    /** c_k of each hinge (unit), four per hinge. */
+    /** c_k of each unit, {@link #arity()} per unit (four for a hinge, up to twelve for a patch row). */
     double[] coefficient;
-    /** (A₀ + A₁)/|e|² at rest per hinge: α = this / B. */
-    double[] areaOverEdgeSquared;
+    /** Whether the units are patch rows (any arity) rather than hinges (four particles). */
+    private final boolean patch;
+    /** α·B per unit, so α = this / B: (A₀ + A₁)/|e|² for a hinge, 1 for a patch row (its C carries √A). */
+    double[] complianceTimesStiffness;
 
-    public QuadraticBendBlock(ConstraintFamily family, int hingeCapacity) {
-        super(family, 4, 3, 3 * Math.max(hingeCapacity, 1));
-        coefficient = new double[4 * (lambda.length / 3)];
-        areaOverEdgeSquared = new double[lambda.length / 3];
+    /** A block of hinges (four particles each). */
+    public QuadraticBendBlock(ConstraintFamily family, int hingeCapacity) { this(family, 4, false, hingeCapacity); }
+
+    /**
+     * A block of {@link BendingPatch} rows on {@code slots} particles each (added by {@link #addPatch}): 12 for
+     * a triangle inside a mesh, fewer near its edges.
+     */
+    public static QuadraticBendBlock patches(ConstraintFamily family, int slots, int triangleCapacity) {
+        if (slots < 4 || slots > BendingPatch.MAX_SLOTS) throw new IllegalArgumentException("slots must be within [4, " + BendingPatch.MAX_SLOTS + "], was " + slots);
+        return new QuadraticBendBlock(family, slots, true, 3 * Math.max(triangleCapacity, 1));
     }
 
-    /** Hinges in the block (three rows each). */
+    private QuadraticBendBlock(ConstraintFamily family, int arity, boolean patch, int unitCapacity) {
+        super(family, arity, 3, 3 * Math.max(unitCapacity, 1));
+        this.patch = patch;
+        coefficient = new double[arity * (lambda.length / 3)];
+        complianceTimesStiffness = new double[lambda.length / 3];
+    }
+
+    /** C = Σ c_k x_k: hinges and patch rows alike. */
+    @Override public boolean isLinear() { return true; }
+
+    /** Whether the units are {@link BendingPatch} rows rather than hinges. */
+    public boolean isPatchBlock() { return patch; }
+
+    /** Units in the block (three rows each): hinges, or a patch block's curvature rows (three per triangle). */
     public int hingeCount() { return count / 3; }
 
     /**
@@ -65,6 +88,7 @@ public final class QuadraticBendBlock extends ConstraintBlock {
      * particles' current (rest) positions, with bending stiffness B (N·m per unit width).
      */
     public int addAtCurrentShape(Particles p, int o0, int o1, int e0, int e1, double bendingStiffness) {
+        if (patch) throw new IllegalStateException("a patch block takes patches (addPatch), not hinges");
         int[] ids = {o0, o1, e0, e1};
         for (int a = 0; a < 4; a++) for (int b = a + 1; b < 4; b++)
             if (ids[a] == ids[b]) throw new IllegalArgumentException("particles must be distinct, was " + o0 + ", " + o1 + ", " + e0 + ", " + e1);
@@ -93,15 +117,38 @@ public final class QuadraticBendBlock extends ConstraintBlock {
         // c₀s₀ + c₁s₁ + c₃|e| = 0 the along-edge one, and Σ c = 0 the translation.
         double c0 = 1 / h0, c1 = 1 / h1, c3 = -(c0 * s0 + c1 * s1) / el, c2 = -c0 - c1 - c3;
         coefficient[4 * u] = c0; coefficient[4 * u + 1] = c1; coefficient[4 * u + 2] = c2; coefficient[4 * u + 3] = c3;
-        areaOverEdgeSquared[u] = 0.5 * el * (h0 + h1) / el2;
+        complianceTimesStiffness[u] = 0.5 * el * (h0 + h1) / el2;
         setBendingStiffness(u, bendingStiffness);
         return u;
+    }
+
+    /**
+     * Adds a triangle's three curvature rows, as {@link BendingPatch#rows} gave them (n particles, c_rk at
+     * rows[MAX_SLOTS·r + k]), with bending stiffness B (N·m); the block's arity must be n. Returns the first row's unit.
+     */
+    public int addPatch(int[] stencil, int n, double[] rows, double bendingStiffness) {
+        if (!this.patch || arity() != n)
+            throw new IllegalStateException("this block takes " + (this.patch ? "patches of " + arity() + " particles" : "hinges") + ", not a patch of " + n);
+        int first = hingeCount();
+        for (int r = 0; r < 3; r++) {
+            int u = hingeCount();
+            for (int row = 0; row < 3; row++) {
+                int i = newSlot();
+                System.arraycopy(stencil, 0, particles, n * i, n);
+            }
+            if (coefficient.length < n * (u + 1)) growHinges(lambda.length / 3);
+            System.arraycopy(rows, BendingPatch.MAX_SLOTS * r, coefficient, n * u, n);
+            // C is √A times the curvature, so α = 1/B gives ½ B A |H|².
+            complianceTimesStiffness[u] = 1;
+            setBendingStiffness(u, bendingStiffness);
+        }
+        return first;
     }
 
     /** Bending stiffness B (N·m) of hinge u: sets its rows' compliance. */
     public void setBendingStiffness(int u, double bendingStiffness) {
         Check.inRange("bendingStiffness", bendingStiffness, Double.MIN_NORMAL, 1e6);
-        for (int r = 0; r < 3; r++) setCompliance(3 * u + r, areaOverEdgeSquared[u] / bendingStiffness);
+        for (int r = 0; r < 3; r++) setCompliance(3 * u + r, complianceTimesStiffness[u] / bendingStiffness);
     }
 
     /** |C| of hinge u: 2 sin(θ/2) for a hinge bent by θ from its flat rest. */
@@ -113,19 +160,26 @@ public final class QuadraticBendBlock extends ConstraintBlock {
 
     /** Row i: component i mod 3 of C of hinge i / 3. */
     @Override public double evaluate(int i, Particles p) {
-        int u = i / 3, a = i % 3, base = 12 * u;
+        int u = i / 3, a = i % 3, n = arity(), base = 3 * n * u;
         double[] x = p.x;
-        return coefficient[4 * u] * x[3 * particles[base] + a] + coefficient[4 * u + 1] * x[3 * particles[base + 1] + a]
-                + coefficient[4 * u + 2] * x[3 * particles[base + 2] + a] + coefficient[4 * u + 3] * x[3 * particles[base + 3] + a];
+        double c = 0;
+        for (int k = 0; k < n; k++) c += coefficient[n * u + k] * x[3 * particles[base + k] + a];
+        return c;
     }
 
     @Override public void gradient(int i, Particles p, double[] out) {
         int u = i / 3, a = i % 3;
-        Arrays.fill(out, 0, 12, 0);
-        for (int k = 0; k < 4; k++) out[3 * k + a] = coefficient[4 * u + k];
+        int n = arity();
+        Arrays.fill(out, 0, 3 * n, 0);
+        for (int k = 0; k < n; k++) out[3 * k + a] += coefficient[n * u + k];
     }
 
     @Override void project(int u, Particles p, SolverContext ctx) {
+        if (!patch) projectHinge(u, p, ctx);
+        else projectPatchRow(u, p, ctx);
+    }
+
+    private void projectHinge(int u, Particles p, SolverContext ctx) {
         final double[] x = p.x, w = p.w;
         final int base = 12 * u, i = 3 * u;
         final int q0 = particles[base], q1 = particles[base + 1], q2 = particles[base + 2], q3 = particles[base + 3];
@@ -144,6 +198,25 @@ public final class QuadraticBendBlock extends ConstraintBlock {
         x[d] += s3 * lx; x[d + 1] += s3 * ly; x[d + 2] += s3 * lz;
     }
 
+    /** One curvature row of a patch: up to twelve particles, the same arithmetic as a hinge. */
+    private void projectPatchRow(int u, Particles p, SolverContext ctx) {
+        final double[] x = p.x, w = p.w;
+        final int n = arity(), base = 3 * n * u, cu = n * u, i = 3 * u;
+        double cx = 0, cy = 0, cz = 0, wGradSq = 0;
+        for (int k = 0; k < n; k++) {
+            int q = particles[base + k], xq = 3 * q;
+            double ck = coefficient[cu + k];
+            cx += ck * x[xq]; cy += ck * x[xq + 1]; cz += ck * x[xq + 2];
+            wGradSq += w[q] * ck * ck;
+        }
+        double lx = deltaLambda(i, cx, wGradSq, ctx), ly = deltaLambda(i + 1, cy, wGradSq, ctx), lz = deltaLambda(i + 2, cz, wGradSq, ctx);
+        for (int k = 0; k < n; k++) {
+            int q = particles[base + k], xq = 3 * q;
+            double s = w[q] * coefficient[cu + k];
+            x[xq] += s * lx; x[xq + 1] += s * ly; x[xq + 2] += s * lz;
+        }
+    }
+
     @Override void projectRange(int from, int to, Particles p, SolverContext ctx) {
         for (int u = from; u < to; u++) project(u, p, ctx);
     }
@@ -154,14 +227,15 @@ public final class QuadraticBendBlock extends ConstraintBlock {
 
     @Override Constraint view(int i) { return new BlockConstraint(this, i); }
 
-    @Override QuadraticBendBlock emptyLike(int capacity) { return new QuadraticBendBlock(family(), (capacity + 2) / 3); }
+    @Override QuadraticBendBlock emptyLike(int capacity) { return new QuadraticBendBlock(family(), arity(), patch, (capacity + 2) / 3); }
 
     @Override void copyRest(int i, ConstraintBlock from, int j) {
         QuadraticBendBlock q = (QuadraticBendBlock) from;
         int u = i / 3, v = j / 3;
-        if (coefficient.length < 4 * (u + 1)) growHinges(lambda.length / 3);
-        System.arraycopy(q.coefficient, 4 * v, coefficient, 4 * u, 4);
-        areaOverEdgeSquared[u] = q.areaOverEdgeSquared[v];
+        int n = arity();
+        if (coefficient.length < n * (u + 1)) growHinges(lambda.length / 3);
+        System.arraycopy(q.coefficient, n * v, coefficient, n * u, n);
+        complianceTimesStiffness[u] = q.complianceTimesStiffness[v];
     }
 
     @Override void grow(int capacity) {
@@ -170,7 +244,7 @@ public final class QuadraticBendBlock extends ConstraintBlock {
     }
 
     private void growHinges(int hinges) {
-        if (coefficient.length < 4 * hinges) coefficient = Arrays.copyOf(coefficient, 4 * hinges);
-        if (areaOverEdgeSquared.length < hinges) areaOverEdgeSquared = Arrays.copyOf(areaOverEdgeSquared, hinges);
+        if (coefficient.length < arity() * hinges) coefficient = Arrays.copyOf(coefficient, arity() * hinges);
+        if (complianceTimesStiffness.length < hinges) complianceTimesStiffness = Arrays.copyOf(complianceTimesStiffness, hinges);
     }
 }

@@ -53,7 +53,9 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
     private final double[] triRest, triK;
     private final MembraneBlock[] triBlock;
     private final int[] triRow;
-    // Quadratic hinges: particles, coefficients, 1/α per component, and their source.
+    // Quadratic hinges and bending patches' rows: particles, coefficients, 1/α per component, and their source.
+    /** Slots per hinge in the arrays below: the most particles any of them takes (4 for hinges, up to 12 for patches). */
+    private final int hingeSlots;
     private final int[] hingeParticle;
     private final double[] hingeCoefficient;
     private final QuadraticBendBlock[] hingeBlock;
@@ -162,7 +164,9 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
         firstFamily = !membranes.isEmpty() ? ConstraintFamily.MEMBRANE : !hinges.isEmpty() ? ConstraintFamily.DIHEDRAL
                 : !springs.isEmpty() ? springs.get(0).family() : ConstraintFamily.TETHER;
 
-        int triangles = 0, hingeCount = 0, springCount = 0;
+        int triangles = 0, hingeCount = 0, springCount = 0, slots = 4;
+        for (QuadraticBendBlock q : hinges) slots = Math.max(slots, q.arity());
+        this.hingeSlots = slots;
         for (MembraneBlock m : membranes) triangles += m.units();
         for (QuadraticBendBlock q : hinges) hingeCount += q.units();
         for (DistanceBlock d : springs) springCount += d.count();
@@ -177,13 +181,19 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
                 triBlock[t] = m;
                 triRow[t] = i;
             }
-        hingeParticle = new int[4 * hingeCount]; hingeCoefficient = new double[4 * hingeCount];
+        // Every hinge or patch row in hingeSlots slots, those past its own arity empty (−1).
+        hingeParticle = new int[hingeSlots * hingeCount]; hingeCoefficient = new double[hingeSlots * hingeCount];
+        Arrays.fill(hingeParticle, -1);
         hingeBlock = new QuadraticBendBlock[hingeCount]; hingeUnit = new int[hingeCount];
         int h = 0;
         for (QuadraticBendBlock q : hinges)
             for (int u = 0; u < q.units(); u++, h++) {
-                for (int k = 0; k < 4; k++) hingeParticle[4 * h + k] = q.particle(3 * u, k);
-                System.arraycopy(q.coefficient, 4 * u, hingeCoefficient, 4 * h, 4);
+                for (int k = 0, arity = q.arity(); k < arity; k++) {
+                    double c = q.coefficient[arity * u + k];
+                    if (c == 0) continue;
+                    hingeParticle[hingeSlots * h + k] = q.particle(3 * u, k);
+                    hingeCoefficient[hingeSlots * h + k] = c;
+                }
                 hingeBlock[h] = q;
                 hingeUnit[h] = u;
             }
@@ -218,7 +228,7 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
         attachedOf = incidences(attached, 1, attachedStart);
         triStart = new int[n + 1]; hingeStart = new int[n + 1]; springStart = new int[n + 1];
         triOf = incidences(triParticle, 3, triStart);
-        hingeOf = incidences(hingeParticle, 4, hingeStart);
+        hingeOf = incidences(hingeParticle, hingeSlots, hingeStart);
         springOf = incidences(springParticle, 2, springStart);
         List<ConstraintBlock> sources = new ArrayList<>(membranes);
         sources.addAll(hinges);
@@ -238,8 +248,8 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
         for (int v = 0; v < n; v++) {
             java.util.TreeSet<Integer> set = new java.util.TreeSet<>();
             for (int e = hingeStart[v]; e < hingeStart[v + 1]; e++) {
-                int base = hingeOf[e] - hingeOf[e] % 4;
-                for (int q = 0; q < 4; q++) set.add(hingeParticle[base + q]);
+                int base = hingeOf[e] - hingeOf[e] % hingeSlots;
+                for (int q = 0; q < hingeSlots; q++) if (hingeParticle[base + q] >= 0) set.add(hingeParticle[base + q]);
             }
             partners[v] = set.stream().mapToInt(Integer::intValue).toArray();
             bendStart[v + 1] = bendStart[v] + partners[v].length;
@@ -247,18 +257,23 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
         bendColumn = new int[bendStart[n]];
         for (int v = 0; v < n; v++) System.arraycopy(partners[v], 0, bendColumn, bendStart[v], partners[v].length);
         bendValue = new double[3 * bendStart[n]];
-        bendEntry = new int[16 * hingeCount];
+        final int slots2 = hingeSlots * hingeSlots;
+        bendEntry = new int[slots2 * hingeCount];
+        Arrays.fill(bendEntry, -1);
         for (int hg = 0; hg < hingeCount; hg++)
-            for (int a = 0; a < 4; a++) {
-                int v = hingeParticle[4 * hg + a];
-                for (int b = 0; b < 4; b++)
-                    bendEntry[16 * hg + 4 * a + b] = bendStart[v] + Arrays.binarySearch(partners[v], hingeParticle[4 * hg + b]);
+            for (int a = 0; a < hingeSlots; a++) {
+                int v = hingeParticle[hingeSlots * hg + a];
+                if (v < 0) continue;
+                for (int b = 0; b < hingeSlots; b++) {
+                    int u = hingeParticle[hingeSlots * hg + b];
+                    if (u >= 0) bendEntry[slots2 * hg + hingeSlots * a + b] = bendStart[v] + Arrays.binarySearch(partners[v], u);
+                }
             }
 
         stepLimit = new double[n];
         Arrays.fill(stepLimit, Double.POSITIVE_INFINITY);
         limitSteps(triStart, triOf, triParticle, 3);
-        limitSteps(hingeStart, hingeOf, hingeParticle, 4);
+        limitSteps(hingeStart, hingeOf, hingeParticle, hingeSlots);
         limitSteps(springStart, springOf, springParticle, 2);
         for (int v = 0; v < n; v++) stepLimit[v] *= MAX_STEP;
 
@@ -282,7 +297,7 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
         for (int v = 0; v < n; v++) {
             int stamp = v + 1;
             markNeighbours(v, triStart, triOf, triParticle, 3, stamp);
-            markNeighbours(v, hingeStart, hingeOf, hingeParticle, 4, stamp);
+            markNeighbours(v, hingeStart, hingeOf, hingeParticle, hingeSlots, stamp);
             markNeighbours(v, springStart, springOf, springParticle, 2, stamp);
             if (self != null)
                 for (int e = contactStart[v], end = contactStart[v + 1]; e < end; e++) {
@@ -373,9 +388,11 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
         for (int h = 0; h < hingeBlock.length; h++)
             for (int axis = 0; axis < 3; axis++) {
                 double k = 1 / hingeBlock[h].compliance(3 * hingeUnit[h] + axis);
-                for (int a = 0; a < 4; a++)
-                    for (int b = 0; b < 4; b++)
-                        bendValue[3 * bendEntry[16 * h + 4 * a + b] + axis] += k * hingeCoefficient[4 * h + a] * hingeCoefficient[4 * h + b];
+                for (int a = 0; a < hingeSlots; a++)
+                    for (int b = 0; b < hingeSlots; b++) {
+                        int entry = bendEntry[hingeSlots * hingeSlots * h + hingeSlots * a + b];
+                        if (entry >= 0) bendValue[3 * entry + axis] += k * hingeCoefficient[hingeSlots * h + a] * hingeCoefficient[hingeSlots * h + b];
+                    }
             }
         for (int s = 0; s < springBlock.length; s++) springStiffness[s] = 1 / springBlock[s].compliance(springRow[s]);
     }

@@ -6,6 +6,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.PriorityQueue;
+import xpbdcloth.engine.BendingPatch;
 import xpbdcloth.engine.ConstraintBlock;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.DihedralBlock;
@@ -17,9 +18,9 @@ import xpbdcloth.engine.TetherBlock;
 
 /**
  * A cloth as a material rather than as springs: from a triangle mesh at rest, the membrane of every
- * triangle ({@link MembraneBlock}, warp along a given in-plane direction), a bend on every interior edge
- * ({@link QuadraticBendBlock} where the rest is flat, {@link DihedralBlock} where it is not) and, if asked, a tether from every free particle to its nearest
- * pinned one along the mesh ({@link TetherBlock}). The blocks' constants come from the material's
+ * triangle ({@link MembraneBlock}, warp along a given in-plane direction), bending ({@link BendingPatch}
+ * rows on every triangle where the rest is flat, {@link DihedralBlock} hinges where it is not) and, if
+ * asked, a tether from every free particle to its nearest pinned one along the mesh ({@link TetherBlock}). The blocks' constants come from the material's
  * moduli and the mesh's rest shape, so the same fabric on a finer mesh is the same cloth.
  */
 public final class FabricConstraints {
@@ -33,7 +34,7 @@ public final class FabricConstraints {
      * @param membrane  in-plane elasticity
      * @param bendingStiffness B, N·m (per unit width)
      * @param tethers   whether to tether free particles to their nearest pin
-     * @return the membrane block, the bending blocks (quadratic where flat, dihedral where bent) and (if asked and anything is pinned) the tether block, in that order
+     * @return the membrane block, the bending blocks ({@link #bends}) and (if asked and anything is pinned) the tether block, in that order
      */
     public static List<ConstraintBlock> build(Particles p, int[] triangles, double[] warp, OrthotropicMaterial membrane,
                                               double bendingStiffness, boolean tethers) {
@@ -88,11 +89,24 @@ public final class FabricConstraints {
     static final double FLAT = 1e-6;
 
     /**
-     * A bend on every edge two triangles share (an edge of more than two triangles bends between the first
-     * two): a {@link QuadraticBendBlock} where the rest mesh is flat across the edge, a {@link DihedralBlock}
-     * where it is bent (a rest shape the quadratic model cannot hold); the blocks that have any, in that order.
+     * The bending of the cloth: where the rest mesh is flat across every edge, {@link BendingPatch} rows on
+     * every triangle (in {@link QuadraticBendBlock}s of patches, by the particles a triangle's rows take),
+     * whose energy is the plate's whatever the triangulation; otherwise {@link #hinges}. The blocks that have any.
      */
     static List<ConstraintBlock> bends(Particles p, int[] triangles, double bendingStiffness) {
+        List<ConstraintBlock> hinges = hinges(p, triangles, bendingStiffness);
+        boolean flat = !hinges.isEmpty() && hinges.stream().allMatch(b -> b instanceof QuadraticBendBlock);
+        return flat ? new ArrayList<>(patches(p, triangles, bendingStiffness)) : hinges;
+    }
+
+    /**
+     * A bend on every edge two triangles share (an edge of more than two bends between the first two): a
+     * {@link QuadraticBendBlock} of hinges where the rest is flat across it and a {@link DihedralBlock} where it
+     * is bent (a rest shape the quadratic model cannot hold), with the discrete-shell weight B|e|²/(A₀ + A₁).
+     * A hinge model's stiffness depends on the triangulation (see {@link BendingPatch}): what a cloth bent at
+     * rest gets, and the model the patches are measured against. The blocks that have any, in that order.
+     */
+    static List<ConstraintBlock> hinges(Particles p, int[] triangles, double bendingStiffness) {
         QuadraticBendBlock flat = new QuadraticBendBlock(ConstraintFamily.DIHEDRAL, triangles.length / 2);
         DihedralBlock bent = new DihedralBlock(ConstraintFamily.DIHEDRAL, 16);
         Map<Long, Integer> firstOpposite = new HashMap<>();
@@ -112,6 +126,27 @@ public final class FabricConstraints {
         List<ConstraintBlock> out = new ArrayList<>();
         if (flat.count() > 0) out.add(flat);
         if (bent.count() > 0) out.add(bent);
+        return out;
+    }
+
+    /**
+     * {@link BendingPatch} rows on every triangle of a flat cloth that has a neighbour, in one block per
+     * number of particles a triangle's rows take (twelve inside the mesh, fewer near its edges), largest first.
+     */
+    static List<QuadraticBendBlock> patches(Particles p, int[] triangles, double bendingStiffness) {
+        BendingPatch patch = new BendingPatch(p.positions(), p.count(), triangles);
+        QuadraticBendBlock[] bySlots = new QuadraticBendBlock[BendingPatch.MAX_SLOTS + 1];
+        int[] stencil = new int[BendingPatch.MAX_SLOTS];
+        double[] rows = new double[3 * BendingPatch.MAX_SLOTS];
+        for (int t = 0; t < triangles.length / 3; t++) {
+            if (!patch.bends(t)) continue;
+            int slots = patch.rows(t, stencil, rows);
+            if (bySlots[slots] == null)
+                bySlots[slots] = QuadraticBendBlock.patches(ConstraintFamily.DIHEDRAL, slots, slots == BendingPatch.MAX_SLOTS ? triangles.length / 3 : 16);
+            bySlots[slots].addPatch(stencil, slots, rows, bendingStiffness);
+        }
+        List<QuadraticBendBlock> out = new ArrayList<>();
+        for (int slots = BendingPatch.MAX_SLOTS; slots >= 4; slots--) if (bySlots[slots] != null) out.add(bySlots[slots]);
         return out;
     }
 

@@ -25,7 +25,7 @@ final class DirectionalDifference {
 
     static final BlockFunction GRADIENT = (b, i, p, out) -> b.gradient(i, p, out);
 
-    private final double[] saved = new double[12], plus = new double[12], minus = new double[12], coarse = new double[12];
+    private final double[] saved = new double[3 * ConstraintBlock.MAX_ARITY], plus = new double[3 * ConstraintBlock.MAX_ARITY], minus = new double[3 * ConstraintBlock.MAX_ARITY], coarse = new double[3 * ConstraintBlock.MAX_ARITY];
 
     /** out = (∂f/∂x)·u for constraint i of b (u and out 3·arity long, |u| &gt; 0), first step eps along û. */
     void along(ConstraintBlock b, int i, Particles p, BlockFunction f, double[] u, double eps, int shrinks, double[] out) {

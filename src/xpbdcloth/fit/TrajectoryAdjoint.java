@@ -67,10 +67,10 @@ final class TrajectoryAdjoint {
     private final double[][] endV;
     /** Tape entries of one substep (the projections' inputs over its sweeps). */
     private final int substepTape;
-    private final double[] v, prev, lambda, alphaTilde, tape, hu = new double[12];
+    private final double[] v, prev, lambda, alphaTilde, tape, hu = new double[3 * ConstraintBlock.MAX_ARITY];
     /** A unit's rows (at most {@link #ROWS}): their ∇C, adjoints of ∇C, C, the matrix A and the Δλ and adjoints solved with it. */
     private static final int ROWS = 3;
-    private final double[][] grad = new double[ROWS][12], gBar = new double[ROWS][12];
+    private final double[][] grad = new double[ROWS][3 * ConstraintBlock.MAX_ARITY], gBar = new double[ROWS][3 * ConstraintBlock.MAX_ARITY];
     private final double[] cOf = new double[ROWS], rhs = new double[ROWS], dLambda = new double[ROWS], nBar = new double[ROWS], dLambdaBar = new double[ROWS];
     private final double[][] matrix = new double[ROWS][ROWS], aBar = new double[ROWS][ROWS], factor = new double[ROWS][ROWS];
     private final double[] pivot = new double[ROWS], forward = new double[ROWS], lambdaBefore = new double[ROWS], lambdaAfterBar = new double[ROWS];

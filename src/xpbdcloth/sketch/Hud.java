@@ -94,7 +94,7 @@ final class Hud {
                 km == null ? (fabric == null ? "" : fmt("  membrane warp %.0f N/m  weft %.0f N/m  ν12 %.2f  shear %.0f N/m", fabric.membrane.warpModulus,
                         fabric.membrane.weftModulus, fabric.membrane.poisson, fabric.membrane.shearModulus))
                         : fmt("  PBD  k %.2f  →  k' %.4f %s", km[0], kPrime(s, km[0]), s.mullerCorrection() ? "(Müller, n=" + s.iterations() + ")" : "(raw k)"),
-                km == null ? (fabric == null ? "" : fmt("  bending %.1e N·m on every interior edge%s", fabric.bendingStiffness,
+                km == null ? (fabric == null ? "" : fmt("  bending %.1e N·m, the plate's on every triangle%s", fabric.bendingStiffness,
                         Double.isNaN(fabric.arealDensity) ? "" : fmt("   %.0f g/m²", 1000 * fabric.arealDensity)))
                         : fmt("  XPBD α %.2e m/N  →  1/α %s", km[1], km[1] == 0 ? "infinite (hard)" : fmt("%.2e N/m", 1 / km[1])),
                 recording ? fmt("recording: %.4g frames per simulated second (wall-clock timings not drawn)", 1 / (xpbdcloth.scene.ObjExport.stepsPerFrame(s.dt()) * s.dt()))

@@ -111,8 +111,8 @@ public final class Bench {
     }
 
     /**
-     * A fabric at N × N: an orthotropic membrane per triangle (three rows, solved together), quadratic
-     * bending on every interior edge and tethers to the two pinned corners, Gauss–Seidel 2 × 10 sweeps.
+     * A fabric at N × N: an orthotropic membrane per triangle (three rows, solved together), bending
+     * patches on every triangle and tethers to the two pinned corners, Gauss–Seidel 2 × 10 sweeps.
      */
     static Simulation fabric(int n) {
         Cloth cloth = new ClothBuilder().resolution(n, n).size(1, 1).origin(0, 1.6, 0).arealDensity(0.2).pinTopCorners()

@@ -104,8 +104,9 @@ class FabricConstraintMathsTest {
     }
 
     /**
-     * Rolled into a cylinder of curvature κ = 1/r, both bending models store ½Bκ² per bent area: the
-     * quadratic hinges a flat sheet gets (|C|² = 4 sin²(θ/2), θ²/12 ≈ 2e-4 below θ² here) and the dihedral
+     * Rolled into a cylinder of curvature κ = 1/r along a row of edges, both hinge models store ½Bκ² per bent
+     * area (the patches a flat sheet gets store it in any direction: {@code BendingOnAnyMeshTest}): the
+     * quadratic hinges (|C|² = 4 sin²(θ/2), θ²/12 ≈ 2e-4 below θ² here) and the dihedral
      * angles a bent rest would get, on the same hinges.
      */
     @Test
@@ -115,7 +116,7 @@ class FabricConstraintMathsTest {
             for (int axis = 0; axis < 2; axis++) {
                 Cloth cloth = sheet(n, size);
                 Particles p = cloth.particles();
-                QuadraticBendBlock quadratic = (QuadraticBendBlock) FabricConstraints.build(p, cloth.triangles(), new double[] {1, 0, 0}, FABRIC, bending, false).get(1);
+                QuadraticBendBlock quadratic = (QuadraticBendBlock) FabricConstraints.hinges(p, cloth.triangles(), bending).get(0);
                 DihedralBlock dihedral = new DihedralBlock(ConstraintFamily.DIHEDRAL, quadratic.hingeCount());
                 for (int u = 0; u < quadratic.hingeCount(); u++)
                     dihedral.addAtCurrentShape(p, quadratic.particle(3 * u, 0), quadratic.particle(3 * u, 1), quadratic.particle(3 * u, 2), quadratic.particle(3 * u, 3), bending);

@@ -57,15 +57,34 @@ class PresetLoaderTest {
     static final String COTTONISH = "\"warpModulus\": 2000, \"weftModulus\": 800, \"poisson\": 0.25, \"shearModulus\": 30, \"bendingStiffness\": 1e-5, \"warp\": [1, 0, 0]";
 
     /**
-     * A fabric replaces the spring families (which become optional): the scene gets a membrane row per
-     * triangle and a bend per interior edge; moduli out of range, a Poisson ratio without a
+     * A fabric replaces the spring families (which become optional): the scene gets three membrane rows and
+     * three bending patch rows per triangle; moduli out of range, a Poisson ratio without a
      * positive-definite stiffness and a zero warp direction are named by field.
      */
+    /**
+     * No material is refused for the mesh it is on: the softest bending the range allows loads on a fine grid
+     * and on cells three times longer than wide (its patch rows' compliance is 1/B whatever the cells), and a
+     * value below the range is named by its preset field.
+     */
+    @Test
+    void theSoftestBendingLoadsOnFineAndElongatedCells() {
+        String softest = COTTONISH.replace("\"bendingStiffness\": 1e-5", "\"bendingStiffness\": " + Limits.BENDING_STIFFNESS.lo);
+        for (String cloth : new String[] {"\"columns\": 48, \"rows\": 48, \"width\": 0.24, \"height\": 0.24",
+                                          "\"columns\": 48, \"rows\": 16, \"width\": 0.24, \"height\": 0.24"}) {
+            String text = fabric(softest).replace("\"columns\": 4, \"rows\": 4, \"width\": 1, \"height\": 1", cloth);
+            Scene scene = Scene.of(PresetLoader.parse("soft.json", text));
+            assertTrue(scene.simulation().constraintCount() > 0, cloth);
+        }
+        PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse("f.json",
+                fabric(COTTONISH.replace("\"bendingStiffness\": 1e-5", "\"bendingStiffness\": 1e-7"))));
+        assertEquals("fabric.bendingStiffness", e.field());
+    }
+
     @Test
     void fabricLoadsAndBadOnesAreNamed() {
         Scene scene = Scene.of(PresetLoader.parse("f.json", fabric(COTTONISH + ", \"tethers\": true")));
-        // 4 × 4: 18 triangles (3 rows each), 21 interior edges (3 rows each: a flat hinge's vector), 15 free particles tethered to the pin.
-        assertEquals(18 * 3 + 21 * 3 + 15, scene.simulation().constraintCount());
+        // 4 × 4: 18 triangles (3 membrane rows each, and 3 curvature rows of 3 components each), 15 free particles tethered to the pin.
+        assertEquals(18 * 3 + 18 * 9 + 15, scene.simulation().constraintCount());
         PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse("f.json", fabric(COTTONISH.replace("\"poisson\": 0.25", "\"poisson\": 1.8"))));
         assertEquals("fabric.poisson", e.field());
         assertTrue(e.problem().contains("positive-definite"), e.getMessage());
