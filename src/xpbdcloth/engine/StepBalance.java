@@ -15,7 +15,7 @@ package xpbdcloth.engine;
  */
 public final class StepBalance {
     /** Scratch, made once per simulation (the HUD asks every few frames). */
-    private final double[] residual, gradient = new double[3 * 12];
+    private final double[] residual, gradient = new double[3 * ConstraintBlock.MAX_ARITY];
     private final boolean[] excluded;
 
     StepBalance(int particles) {
@@ -25,6 +25,14 @@ public final class StepBalance {
 
     /** Below this worst imbalance (a fraction of a particle's weight) the solve is called converged. */
     public static final double CONVERGED = 0.01;
+
+    /** What a worst imbalance means, in words: the HUD's and the commands' one sentence. */
+    public static String verdict(double worst) {
+        return worst < CONVERGED
+                ? String.format(java.util.Locale.ROOT, "converged: worst particle off balance by %.2g of its weight", worst)
+                : String.format(java.util.Locale.ROOT, "NOT CONVERGED: worst particle off balance by %.2g × its weight, converged is under %.2g "
+                        + "(the shape is the solver's, not the material's)", worst, CONVERGED);
+    }
 
     /**
      * The worst |rᵢ|/(mᵢ|g|) over the free particles held only by compliant constraints, after the last

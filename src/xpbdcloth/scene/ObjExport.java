@@ -74,10 +74,14 @@ public final class ObjExport {
 
     /** The same with a frame every {@code steps} steps of the preset's dt. */
     public static int recordSequence(Preset preset, int frames, Path folder, int steps) throws IOException {
+        return recordSequence(Scene.of(preset), frames, folder, steps);
+    }
+
+    /** The same from a scene already built (the caller keeps it, to ask how its last step went). */
+    public static int recordSequence(Scene scene, int frames, Path folder, int steps) throws IOException {
         if (frames < 1) throw new IllegalArgumentException("frames must be >= 1, was " + frames);
         if (steps < 1) throw new IllegalArgumentException("steps per frame must be >= 1, was " + steps);
         Files.createDirectories(folder);
-        Scene scene = Scene.of(preset);
         for (int f = 1; f <= frames; f++) {
             for (int s = 0; s < steps; s++) scene.simulation().step();
             write(frameFile(folder, f), scene);

@@ -62,9 +62,7 @@ final class Hud {
      * ({@link StepBalance}): under {@link StepBalance#CONVERGED} the shape is the material's, over it the solver's.
      */
     static String balance(Simulation sim) {
-        double worst = sim.balance();
-        return worst < StepBalance.CONVERGED ? fmt("converged: worst particle off balance by %.2g of its weight", worst)
-                : fmt("NOT CONVERGED: worst particle off balance by %.2g × its weight (the shape is the solver's, not the material's)", worst);
+        return StepBalance.verdict(sim.balance());
     }
 
     /** Whether the simulation keeps up with the clock: a step's cost against the time it simulates. */

@@ -180,9 +180,11 @@ public final class Main implements Callable<Integer> {
             xpbdcloth.scene.Preset preset = PresetLoader.byNameOrPath(sketch.scene);
             int steps = announce(preset, "frames", usd);
             long t0 = System.nanoTime();
-            int n = xpbdcloth.usd.UsdRecording.record(preset, frames, usd.toPath(), steps);
+            xpbdcloth.scene.Scene scene = xpbdcloth.scene.Scene.of(preset);
+            int n = xpbdcloth.usd.UsdRecording.record(scene, frames, usd.toPath(), steps);
             System.out.printf(java.util.Locale.ROOT, "wrote %s: %d time codes (0 is the start), %.1f MB, in %.1f s%n",
                     usd, n, java.nio.file.Files.size(usd.toPath()) / 1e6, (System.nanoTime() - t0) / 1e9);
+            System.out.println("last step: " + xpbdcloth.engine.StepBalance.verdict(scene.simulation().balance()));
             return 0;
         }
 
@@ -206,18 +208,24 @@ public final class Main implements Callable<Integer> {
             xpbdcloth.scene.Preset preset = PresetLoader.byNameOrPath(sketch.scene);
             int steps = announce(preset, "OBJ frames", obj);
             long t0 = System.nanoTime();
-            int n = xpbdcloth.scene.ObjExport.recordSequence(preset, frames, obj.toPath(), steps);
+            xpbdcloth.scene.Scene scene = xpbdcloth.scene.Scene.of(preset);
+            int n = xpbdcloth.scene.ObjExport.recordSequence(scene, frames, obj.toPath(), steps);
             System.out.printf(java.util.Locale.ROOT, "wrote %d OBJ frames (%d vertices each; import at %.6g fps to play in real time) in %.1f s%n",
                     n, preset.cloth.isMesh() ? preset.cloth.mesh.vertexCount() : preset.cloth.columns * preset.cloth.rows, 1 / (steps * preset.solver.dt), (System.nanoTime() - t0) / 1e9);
+            System.out.println("last step: " + xpbdcloth.engine.StepBalance.verdict(scene.simulation().balance()));
             return 0;
         }
     }
 
     @Command(name = "check", mixinStandardHelpOptions = true, showDefaultValues = true,
-            description = "Loads presets (and fabric catalogues) without a window, builds their scenes, and reports each one's problems on standard error (exit code 2 if any).")
+            description = "Loads presets (and fabric catalogues) without a window, builds their scenes, steps them, and reports each one's problems "
+                    + "on standard error (exit code 2 if any) and whether its solve converges (a note, not a problem).")
     static final class CheckCommand implements Callable<Integer> {
         @CommandLine.Parameters(arity = "1..*", paramLabel = "PRESET", description = "built-in scene names, preset files or fabric catalogue files")
         java.util.List<String> presets;
+
+        @Option(names = "--steps", description = "steps to run before saying whether the solve has converged (0: build only)")
+        int steps = 10;
 
         @CommandLine.Spec
         CommandLine.Model.CommandSpec spec;
@@ -232,8 +240,13 @@ public final class Main implements Callable<Integer> {
                         out.printf("%s: ok (a fabric catalogue: %d fabrics)%n", p, fabrics.size());
                         continue;
                     }
+                    if (steps < 0) throw new IllegalArgumentException("--steps must be >= 0, was " + steps);
                     xpbdcloth.scene.Scene scene = xpbdcloth.scene.Scene.of(PresetLoader.byNameOrPath(p));
                     out.printf("%s: ok (%d particles, %d constraints)%n", p, scene.cloth().particles().count(), scene.simulation().constraintCount());
+                    if (steps > 0) {
+                        for (int s = 0; s < steps; s++) scene.simulation().step();
+                        out.printf("  after %d steps: %s%n", steps, xpbdcloth.engine.StepBalance.verdict(scene.simulation().balance()));
+                    }
                 } catch (IllegalArgumentException e) {
                     err.println(e.getMessage());
                     bad++;
