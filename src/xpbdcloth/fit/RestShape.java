@@ -15,11 +15,14 @@ public final class RestShape {
     public final double[] positions;
     /** How far (largest distance of one particle, m) the simulator's own rest was from the equilibrium. */
     public final double simulatorGap;
+    /** The same as a root mean square over the free particles' coordinates, m (the fit's residual's measure). */
+    public final double simulatorGapRms;
     public final double simulatedSeconds;
 
-    private RestShape(double[] positions, double simulatorGap, double simulatedSeconds) {
+    private RestShape(double[] positions, double simulatorGap, double simulatorGapRms, double simulatedSeconds) {
         this.positions = positions;
         this.simulatorGap = simulatorGap;
+        this.simulatorGapRms = simulatorGapRms;
         this.simulatedSeconds = simulatedSeconds;
     }
 
@@ -46,12 +49,16 @@ public final class RestShape {
         if (eq.factor == null)
             throw new FitException("the rest shape of " + scene.preset().name + " is not a stable equilibrium (its Hessian is not positive definite:"
                     + " the cloth lies in a plane it would buckle out of, e.g. a vertical cloth whose weight is all in its plane)");
-        double gap = 0;
-        for (int i = 0; i < simulated.length; i += 3)
-            gap = Math.max(gap, Math.sqrt(sq(simulated[i] - eq.positions[i]) + sq(simulated[i + 1] - eq.positions[i + 1]) + sq(simulated[i + 2] - eq.positions[i + 2])));
+        double gap = 0, sum = 0;
+        int free = 0;
+        for (int i = 0; i < simulated.length; i += 3) {
+            double d2 = sq(simulated[i] - eq.positions[i]) + sq(simulated[i + 1] - eq.positions[i + 1]) + sq(simulated[i + 2] - eq.positions[i + 2]);
+            gap = Math.max(gap, Math.sqrt(d2));
+            if (!sim.particles().isPinned(i / 3)) { sum += d2; free++; }
+        }
         if (energy.activeTethers(eq.positions) > 0)
             throw new FitException("the rest shape of " + scene.preset().name + " stretches " + energy.activeTethers(eq.positions) + " tethers, which a fit leaves out");
-        return new RestShape(eq.positions, gap, sim.time() - t0);
+        return new RestShape(eq.positions, gap, Math.sqrt(sum / Math.max(1, 3 * free)), sim.time() - t0);
     }
 
     static double heaviestWeight(Simulation sim) {

@@ -131,6 +131,16 @@ final class FitCommand implements Callable<Integer> {
         if (noiseMm > 0)
             out.printf(Locale.ROOT, "noise of %.3f mm per coordinate alone leaves an RMS of about %.3f mm%n", noiseMm, noiseMm * Math.sqrt(3));
         if (!converged) out.printf(Locale.ROOT, "the fit did not converge in %d iterations; last loss %.4e m²; what it reached is written%n", maxIterations, last.loss);
+        if (!dynamic && converged) {
+            // Whether the simulator, at the fitted material and the scene's settings, rests where the fit assumed.
+            double tolerance = Math.max(0.25 * last.rms, 1e-5);
+            try {
+                out.println(xpbdcloth.fit.SolverRestGap.of(PresetLoader.byNameOrPath(json.toString()), tolerance).say(last.rms));
+            } catch (xpbdcloth.fit.FitException e) {
+                out.println("note: the fitted material's own rest could not be checked against the simulator's (" + e.getMessage()
+                        + "): a fitted material without a stable rest is a sign the observation is not one the scene's energy can rest in");
+            }
+        }
         out.println("wrote " + json + ", " + folder.resolve("iterations.csv") + ", " + folder.resolve("fit.png"));
         return converged ? 0 : 1;
     }
