@@ -20,10 +20,11 @@ import java.util.Map;
  *   H_t = Σ_e β_e (∇λ_p ∇λ_qᵀ + ∇λ_q ∇λ_pᵀ)
  *   C_r = √A (H₁₁, H₂₂, √2 H₁₂)_r = Σ_k c_rk x_k ∈ ℝ³,   ½ B Σ_r |C_r|² = ½ B A |H|²  (A the rest area)
  * </pre>
- * Why: a hinge energy Σ_e k_e θ_e² cannot weight its edges so that every triangulation bends alike (on a grid
- * with alternating diagonals a cantilever relaxed into shapes whose diagonals took a fifth of the energy and
- * bent 25 % too easily); a quadratic through six points is exact for any quadratic surface but each
- * triangle's is its own, and zig-zag shapes between them lowered the energy again (10 % on the same grid).
+ * Why: a hinge energy Σ_e k_e θ_e² cannot weight its edges so that every triangulation bends alike (bent
+ * across a grid's diagonals, its axis edges fold by twice their share; a cantilever relaxes into shapes whose
+ * diagonals take part of the bend); a quadratic through six points is exact for any quadratic surface but
+ * each triangle's is its own, and zig-zag shapes between them lowered the energy again. Both measured
+ * against the elastica in docs/fabric.md.
  * The Morley triangle (Morley 1968; the nonconforming plate element whose slopes at edge midpoints are
  * shared by the two triangles of an edge, so it passes the patch test and converges) closes that door; the
  * six-point quadratics give it slopes exact for quadratics on any mesh, so a uniformly curved sheet stores
@@ -45,12 +46,14 @@ public final class BendingPatch {
     private final int[] triangles;
     /** For each triangle edge slot 3t + e (corner e to e + 1), the same edge's slot in the other triangle, or −1. */
     private final int[] twin;
+    private final Fit[] fits;
 
     /** A flat mesh at rest: positions (3 per particle) and triangles (3 indices each). */
     public BendingPatch(double[] x, int particles, int[] triangles) {
         this.x = x;
         this.triangles = triangles;
         this.twin = twins(particles, triangles);
+        this.fits = new Fit[triangles.length / 3];
     }
 
     /** Whether triangle t has a neighbour across at least one edge (a lone triangle has nothing to bend against). */
@@ -90,13 +93,13 @@ public final class BendingPatch {
         double[][] slope = new double[3][MAX_SLOTS];
         for (int e = 0; e < 3; e++) {
             int p = triangles[3 * t + e], q = triangles[3 * t + (e + 1) % 3];
-            double mx = f.normalX[e], my = f.normalY[e];
-            double midX = 0.5 * (f.px(p) + f.px(q)), midY = 0.5 * (f.py(p) + f.py(q));
+            double[] mid = {0.5 * (x[3 * p] + x[3 * q]), 0.5 * (x[3 * p + 1] + x[3 * q + 1]), 0.5 * (x[3 * p + 2] + x[3 * q + 2])};
+            double[] normal = f.inSpace(f.normalX[e], f.normalY[e]);
             int other = twin[3 * t + e];
             int[] sources = other < 0 ? new int[] {t} : new int[] {t, other / 3};
             for (int source : sources) {
-                Fit fit = new Fit(source, f);
-                double[] weight = fit.slope(midX, midY, mx, my);
+                Fit fit = fit(source);
+                double[] weight = fit.slope(mid, normal);
                 for (int k = 0; k < Fit.POINTS; k++) {
                     int particle = fit.point[k];
                     double w = weight[k];
@@ -166,76 +169,87 @@ public final class BendingPatch {
             }
         }
 
+        /** The in-plane vector (a, b) of this frame, in space. */
+        double[] inSpace(double a, double b) { return new double[] {a * e1x + b * e2x, a * e1y + b * e2y, a * e1z + b * e2z}; }
+
         double px(int particle) { return (x[3 * particle] - ox) * e1x + (x[3 * particle + 1] - oy) * e1y + (x[3 * particle + 2] - oz) * e1z; }
         double py(int particle) { return (x[3 * particle] - ox) * e2x + (x[3 * particle + 1] - oy) * e2y + (x[3 * particle + 2] - oz) * e2z; }
+    }
+
+    /** Triangle s's {@link Fit}, made the first time a patch asks (each is read by up to four patches). */
+    private Fit fit(int s) {
+        if (fits[s] == null) fits[s] = new Fit(s);
+        return fits[s];
     }
 
     /**
      * The quadratic through triangle s's corners and the vertices across its edges, in s's affine coordinates
      * (ξ, η), the corners at (0, 0), (1, 0), (0, 1) (a quadratic in x is one in ξ; these keep the 6 × 6 system
-     * well conditioned however long and thin the triangle): its six coefficients (1, ξ, η, ξ², ξη, η²) as
-     * weights of the points' heights.
+     * well conditioned however long and thin the triangle, and need no frame): its six coefficients
+     * (1, ξ, η, ξ², ξη, η²) as weights of the points' heights.
      */
     private final class Fit {
         static final int POINTS = 6;
         final int[] point = new int[POINTS];
-        /** x₀ of s in frame f, and J⁻¹ with J = [x₁ − x₀, x₂ − x₀] (row-major). */
-        final double x0, y0, j00, j01, j10, j11;
+        /** Corner a of s, and the rows of J⁻¹ (J = [b − a, c − a]) as vectors in space: ξ = r₁·(x − a), η = r₂·(x − a). */
+        final double[] origin, r1, r2;
         double[][] inverse;
 
-        Fit(int s, Frame f) {
+        Fit(int s) {
             int a = triangles[3 * s], b = triangles[3 * s + 1], c = triangles[3 * s + 2];
-            x0 = f.px(a); y0 = f.py(a);
-            double ax = f.px(b) - x0, ay = f.py(b) - y0, bx = f.px(c) - x0, by = f.py(c) - y0, det = ax * by - bx * ay;
-            j00 = by / det; j01 = -bx / det; j10 = -ay / det; j11 = ax / det;
+            origin = new double[] {x[3 * a], x[3 * a + 1], x[3 * a + 2]};
+            double[] u = new double[3], v = new double[3];
+            for (int k = 0; k < 3; k++) { u[k] = x[3 * b + k] - origin[k]; v[k] = x[3 * c + k] - origin[k]; }
+            double uu = dot(u, u), uv = dot(u, v), vv = dot(v, v), det = uu * vv - uv * uv;
+            r1 = new double[3]; r2 = new double[3];
+            for (int k = 0; k < 3; k++) { r1[k] = (vv * u[k] - uv * v[k]) / det; r2[k] = (uu * v[k] - uv * u[k]) / det; }
             Frame own = new Frame(s);
-            for (int drop = 0; drop < 8; drop++) {
-                double[][] v = new double[POINTS][];
-                boolean same = drop != 0;
+            // The neighbours to leave out, fewest first: none, each one, each two, all three (the triangle alone: a plane).
+            for (int drop : new int[] {0, 1, 2, 4, 3, 5, 6, 7}) {
+                boolean changed = drop == 0;
                 for (int k = 0; k < 3; k++) point[k] = triangles[3 * s + k];
                 for (int e = 0; e < 3; e++) {
                     int across = (drop >> e & 1) != 0 ? -1 : across(s, e);
-                    if (across != across(s, e)) same = false;
+                    if (across != across(s, e)) changed = true;
                     point[3 + e] = across;
                 }
-                if (same) continue;
+                if (!changed) continue;
+                double[][] rows = new double[POINTS][];
                 for (int k = 0; k < POINTS; k++) {
                     if (point[k] >= 0) {
-                        double dx = f.px(point[k]) - x0, dy = f.py(point[k]) - y0;
-                        double xi = j00 * dx + j01 * dy, eta = j10 * dx + j11 * dy;
-                        v[k] = new double[] {1, xi, eta, xi * xi, xi * eta, eta * eta};
+                        double[] d = {x[3 * point[k]] - origin[0], x[3 * point[k] + 1] - origin[1], x[3 * point[k] + 2] - origin[2]};
+                        double xi = dot(r1, d), eta = dot(r2, d);
+                        rows[k] = new double[] {1, xi, eta, xi * xi, xi * eta, eta * eta};
                     } else {
-                        // A free edge of s: mᵀ∇²q m = 0 with m its outward normal, in ξ as J⁻¹m (s's frame into f's: one plane).
-                        int e = k - 3;
-                        double wx = own.normalX[e] * own.e1x + own.normalY[e] * own.e2x;
-                        double wy = own.normalX[e] * own.e1y + own.normalY[e] * own.e2y;
-                        double wz = own.normalX[e] * own.e1z + own.normalY[e] * own.e2z;
-                        double mx = wx * f.e1x + wy * f.e1y + wz * f.e1z, my = wx * f.e2x + wy * f.e2y + wz * f.e2z;
-                        double u = j00 * mx + j01 * my, w = j10 * mx + j11 * my, l = Math.hypot(u, w);
-                        u /= l; w /= l; // the condition is homogeneous: a unit row keeps the pivots comparable
-                        v[k] = new double[] {0, 0, 0, u * u, u * w, w * w};
+                        // A free edge of s: mᵀ∇²q m = 0 with m its outward normal, in ξ as J⁻¹m.
+                        double[] m = own.inSpace(own.normalX[k - 3], own.normalY[k - 3]);
+                        double p = dot(r1, m), q = dot(r2, m), l = Math.hypot(p, q);
+                        p /= l; q /= l; // the condition is homogeneous: a unit row keeps the pivots comparable
+                        rows[k] = new double[] {0, 0, 0, p * p, p * q, q * q};
                     }
                 }
-                inverse = invert(v);
+                inverse = invert(rows);
                 if (inverse != null) return;
             }
             throw new IllegalArgumentException("triangle " + s + " (" + a + ", " + b + ", " + c + ") fixes no curvature even alone: its edges are not three directions");
         }
 
-        /** The weights of the points' heights in ∂q/∂m at (x, y) of frame f, m a unit vector of f. */
-        double[] slope(double x, double y, double mx, double my) {
-            double dx = x - x0, dy = y - y0, xi = j00 * dx + j01 * dy, eta = j10 * dx + j11 * dy;
-            double u = j00 * mx + j01 * my, w = j10 * mx + j11 * my;
+        /** The weights of the points' heights in ∂q/∂m at the point {@code at}, m a unit vector in the plane (both in space). */
+        double[] slope(double[] at, double[] m) {
+            double[] d = {at[0] - origin[0], at[1] - origin[1], at[2] - origin[2]};
+            double xi = dot(r1, d), eta = dot(r2, d), u = dot(r1, m), w = dot(r2, m);
             // ∇_x q = J⁻ᵀ ∇_ξ q, so ∂q/∂m = (J⁻¹m)·∇_ξ q = u (q₁ + 2q₃ξ + q₄η) + w (q₂ + q₄ξ + 2q₅η).
-            double[] d = {0, u, w, 2 * xi * u, eta * u + xi * w, 2 * eta * w};
+            double[] along = {0, u, w, 2 * xi * u, eta * u + xi * w, 2 * eta * w};
             double[] out = new double[POINTS];
             for (int k = 0; k < POINTS; k++) {
                 if (point[k] < 0) continue;
-                for (int j = 0; j < POINTS; j++) out[k] += d[j] * inverse[j][k];
+                for (int j = 0; j < POINTS; j++) out[k] += along[j] * inverse[j][k];
             }
             return out;
         }
     }
+
+    private static double dot(double[] a, double[] b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
     /** For each edge slot 3t + e, the slot of the same edge in the first other triangle that has it, or −1. */
     private static int[] twins(int particles, int[] triangles) {

@@ -94,9 +94,14 @@ public final class FabricConstraints {
      * whose energy is the plate's whatever the triangulation; otherwise {@link #hinges}. The blocks that have any.
      */
     static List<ConstraintBlock> bends(Particles p, int[] triangles, double bendingStiffness) {
-        List<ConstraintBlock> hinges = hinges(p, triangles, bendingStiffness);
-        boolean flat = !hinges.isEmpty() && hinges.stream().allMatch(b -> b instanceof QuadraticBendBlock);
-        return flat ? new ArrayList<>(patches(p, triangles, bendingStiffness)) : hinges;
+        BendingPatch patch = new BendingPatch(p.positions(), p.count(), triangles);
+        for (int t = 0; t < triangles.length; t += 3)
+            for (int e = 0; e < 3; e++) {
+                int across = patch.across(t / 3, e);
+                if (across >= 0 && !QuadraticBendBlock.isFlat(p, triangles[t + (e + 2) % 3], across, triangles[t + (e + 1) % 3], triangles[t + e], FLAT))
+                    return hinges(p, triangles, bendingStiffness);
+            }
+        return new ArrayList<>(patches(p, triangles, patch, bendingStiffness));
     }
 
     /**
@@ -134,7 +139,10 @@ public final class FabricConstraints {
      * number of particles a triangle's rows take (twelve inside the mesh, fewer near its edges), largest first.
      */
     static List<QuadraticBendBlock> patches(Particles p, int[] triangles, double bendingStiffness) {
-        BendingPatch patch = new BendingPatch(p.positions(), p.count(), triangles);
+        return patches(p, triangles, new BendingPatch(p.positions(), p.count(), triangles), bendingStiffness);
+    }
+
+    private static List<QuadraticBendBlock> patches(Particles p, int[] triangles, BendingPatch patch, double bendingStiffness) {
         QuadraticBendBlock[] bySlots = new QuadraticBendBlock[BendingPatch.MAX_SLOTS + 1];
         int[] stencil = new int[BendingPatch.MAX_SLOTS];
         double[] rows = new double[3 * BendingPatch.MAX_SLOTS];

@@ -23,8 +23,8 @@ import xpbdcloth.engine.Simulation;
  * (a fabric's membrane rows and dihedral edges) keeps their ratios and fits their common scale.
  *
  * <p>Derivatives: ∇E uses each block's own analytic C and ∇C (the functions the solvers project with);
- * the Hessian is ∇Cⱼ∇Cⱼᵀ for a linear Cⱼ (bending), else the central difference of each constraint's Cⱼ∇Cⱼ, i.e. of those same functions, at steps of
- * 1e-4 and ½·1e-4 of the shortest rest edge combined by Richardson extrapolation (error O(h⁴): the plain
+ * the Hessian is ∇Cⱼ∇Cⱼᵀ for a linear Cⱼ (bending), else the central difference of each constraint's
+ * Cⱼ∇Cⱼ, i.e. of those same functions, at steps of 1e-4 and ½·1e-4 of the shortest rest edge combined by Richardson extrapolation (error O(h⁴): the plain
  * difference's O(h²) error at 1e-5, 1e-10 of an entry, became 1e-4 in the gradient of a draped cloth whose Hessian
  * spans ten decades) — so there is no second
  * copy of any constraint's maths to drift from the first. Differencing Cⱼ∇Cⱼ rather than ∇Cⱼ keeps the

@@ -9,11 +9,12 @@ import xpbdcloth.scene.Scene;
  * (∇E = 0, {@link ClothEnergy}), and the fewest substeps at which it comes within a tolerance.
  *
  * <p>Why: a static fit matches the energy's minimum to the observed shape. A converged XPBD step rests there
- * at any dt, but a few sweeps per substep stop short of it by an amount that grows with the substep (the
- * drape at its 20 ms step, 10 × 20 sweeps: 0.4 mm), so a shape this simulator made at those settings
- * carries that much solver error, and a fit puts it into the compliances (structural +90 %, shear −32 %,
- * with an RMS of 0.4 mm that looks like success). The fit cannot tell that error from the material's; it
- * can measure how large it is at the fitted material and say so, with the settings that would not have it.
+ * at any dt, but a few sweeps per substep stop short of it by an amount that grows with the substep, so a
+ * shape this simulator made at those settings carries that much solver error, and a fit puts it into the
+ * compliances with a small residual that looks like success (measured in docs/fitting.md; the drape's gap
+ * and the substeps that close it are {@code SolverRestGapTest}'s). The fit cannot tell that error from the
+ * material's; it can measure how large it is at the fitted material and say so, with the settings that
+ * would not have it.
  */
 public final class SolverRestGap {
     /** RMS over the free particles' coordinates of the simulator's rest less the equilibrium, m, at the preset's settings. */

@@ -231,6 +231,7 @@ public final class Main implements Callable<Integer> {
         CommandLine.Model.CommandSpec spec;
 
         @Override public Integer call() {
+            if (steps < 0) throw new CommandLine.ParameterException(spec.commandLine(), "--steps must be >= 0, was " + steps);
             int bad = 0;
             java.io.PrintWriter out = spec.commandLine().getOut(), err = spec.commandLine().getErr();
             for (String p : presets) {
@@ -240,7 +241,6 @@ public final class Main implements Callable<Integer> {
                         out.printf("%s: ok (a fabric catalogue: %d fabrics)%n", p, fabrics.size());
                         continue;
                     }
-                    if (steps < 0) throw new IllegalArgumentException("--steps must be >= 0, was " + steps);
                     xpbdcloth.scene.Scene scene = xpbdcloth.scene.Scene.of(PresetLoader.byNameOrPath(p));
                     out.printf("%s: ok (%d particles, %d constraints)%n", p, scene.cloth().particles().count(), scene.simulation().constraintCount());
                     if (steps > 0) {
