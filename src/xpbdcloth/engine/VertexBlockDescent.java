@@ -297,7 +297,12 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
         for (int v = 0; v < n; v++) {
             int stamp = v + 1;
             markNeighbours(v, triStart, triOf, triParticle, 3, stamp);
-            markNeighbours(v, hingeStart, hingeOf, hingeParticle, hingeSlots, stamp);
+            // B's row of v lists every particle v shares a hinge or a patch with, once: a patch's twelve
+            // particles are in some fifty of v's rows, which the colouring would visit each.
+            for (int e = bendStart[v], end = bendStart[v + 1]; e < end; e++) {
+                int u = bendColumn[e];
+                if (colourOf[u] >= 0) colourMark[colourOf[u]] = stamp;
+            }
             markNeighbours(v, springStart, springOf, springParticle, 2, stamp);
             if (self != null)
                 for (int e = contactStart[v], end = contactStart[v + 1]; e < end; e++) {
