@@ -234,7 +234,9 @@ public final class PresetLoader {
 
     /** Parses a fabric catalogue ({@code fabrics.json}); {@code file} names it in errors. */
     static List<Fabric> parseCatalogue(String file, String text) {
-        return new Reader(file, null).catalogue(new Node(readJson(file, text), ""));
+        Reader reader = new Reader(file, null);
+        JsonNode json = readJson(file, text);
+        return reader.whole(() -> reader.catalogue(new Node(json, "")));
     }
 
     /** Parses preset text; {@code file} names it in errors; a mesh file is looked up beside it. */
@@ -244,7 +246,9 @@ public final class PresetLoader {
     }
 
     static Preset parse(String file, String text, MeshFiles meshes) {
-        return new Reader(file, meshes).preset(new Node(readJson(file, text), ""));
+        Reader reader = new Reader(file, meshes);
+        JsonNode json = readJson(file, text);
+        return reader.whole(() -> reader.preset(new Node(json, "")));
     }
 
     private static JsonNode readJson(String file, String text) {
@@ -279,10 +283,43 @@ public final class PresetLoader {
             this.meshes = meshes;
         }
 
+        /**
+         * Problems found so far that let reading go on: a number or a count outside its range is noted and read
+         * as the nearest value inside it, so the fields after it are still checked and a file's every problem
+         * is reported at once, not one per attempt.
+         */
+        final List<PresetException> found = new ArrayList<>();
+
         PresetException fail(String field, String problem) {
             return new PresetException(file, field.isEmpty() ? "(root)" : field, problem);
         }
 
+        /** The problems found, as one exception (itself when there is one). */
+        PresetException everything() {
+            return found.size() == 1 ? found.get(0) : new PresetException(found);
+        }
+
+        /** Reads a whole file: everything it reads, or every problem found in it at once. */
+        <T> T whole(java.util.function.Supplier<T> read) {
+            T t = part(read);
+            if (!found.isEmpty()) throw everything();
+            return t;
+        }
+
+        /**
+         * Reads a part of the preset that does not depend on another: a problem that stops it is noted and the
+         * part comes back null, so the parts after it are still read.
+         */
+        <T> T part(java.util.function.Supplier<T> read) {
+            try {
+                return read.get();
+            } catch (PresetException e) {
+                found.addAll(e.all());
+                return null;
+            }
+        }
+
+        /** The preset, or null when a part it needs could not be read (its problems are in {@link #found}). */
         Preset preset(Node root) {
             if (root.json.isObject() && root.json.has("fabrics") && !root.json.has("cloth"))
                 throw fail("", "is the fabric catalogue, not a scene: name one of its fabrics in a preset's \"fabric\": {\"catalogue\": NAME}, or press F on a fabric scene");
@@ -290,9 +327,22 @@ public final class PresetLoader {
             String name = string(required(root, "name"));
             Node d = optional(root, "description");
             String description = d == null ? "" : string(d);
+            // The fabric, the cloth (which needs the fabric to know its mass), the families (optional with a
+            // fabric, a whole material, added on top if given) and the solver are read apart, so a problem in one
+            // does not hide another's; the rest needs all of them.
             Node fn = optional(root, "fabric");
-            Preset.FabricSpec fabric = fn == null ? null : fabric(fn);
-            Preset.Cloth cloth = cloth(required(root, "cloth"), fabric);
+            Preset.FabricSpec fabric = fn == null ? null : part(() -> fabric(fn));
+            Preset.Cloth cloth = fn != null && fabric == null ? null : part(() -> cloth(required(root, "cloth"), fabric));
+            Node fs = fn == null ? part(() -> required(root, "families")) : optional(root, "families");
+            Map<ConstraintFamily, Preset.Material> families = fs == null ? (fn == null ? null : new EnumMap<>(ConstraintFamily.class)) : part(() -> families(fs));
+            Preset.Solver solver = part(() -> solver(required(root, "solver")));
+            if (cloth == null || families == null || solver == null) return null;
+            return part(() -> rest(root, name, description, fabric, cloth, families, solver));
+        }
+
+        /** The parts that need the cloth and the solver: the colliders, self-collision, pin motions, wind and aerodynamics. */
+        private Preset rest(Node root, String name, String description, Preset.FabricSpec fabric, Preset.Cloth cloth,
+                            Map<ConstraintFamily, Preset.Material> families, Preset.Solver solver) {
             if (fabric != null && fabric.warp == null) {
                 if (!cloth.isMesh())
                     throw fail("fabric.warp", "is missing, and a grid cloth has no texture coordinates to take it from: give the warp direction, e.g. [1, 0, 0]");
@@ -303,10 +353,6 @@ public final class PresetLoader {
             String none = "and this cloth has none (" + (cloth.isMesh() ? cloth.meshFile + " has only lines" : "a single row or column of particles") + ")";
             if (fabric != null && !triangles) throw fail("fabric", "is a membrane of triangles, " + none + ": give the cloth two rows and columns, or spring families");
             if (root.json.has("aerodynamics") && !triangles) throw fail("aerodynamics", "acts on triangles, " + none + ": use wind, which acts on particles");
-            // A fabric is a whole material: the spring families are then optional (added on top if given).
-            Node fs = fabric == null ? required(root, "families") : optional(root, "families");
-            Map<ConstraintFamily, Preset.Material> families = fs == null ? new EnumMap<>(ConstraintFamily.class) : families(fs);
-            Preset.Solver solver = solver(required(root, "solver"));
             List<Preset.SphereSpec> spheres = new ArrayList<>();
             Node ss = optional(root, "spheres");
             if (ss != null) for (Node s : array(ss, Limits.MAX_SPHERES)) spheres.add(sphere(s));
@@ -337,7 +383,8 @@ public final class PresetLoader {
             Node w = optional(root, "wind");
             long particles = cloth.mesh != null ? cloth.mesh.vertexCount() : (long) cloth.columns * cloth.rows;
             String tooMuch = Limits.workProblem(particles, solver.iterations, solver.substeps, colliders, solver.type.isGlobal());
-            if (tooMuch != null) throw fail("solver", tooMuch);
+            // Judged on the values read, not on a field's stand-in for one out of range.
+            if (tooMuch != null && found.isEmpty()) throw fail("solver", tooMuch);
             return new Preset(file, name, description, cloth, families, solver, spheres, planes, solids, bodies, self, motions, w == null ? null : wind(w), fabric, aerodynamics(optional(root, "aerodynamics")));
         }
 
@@ -848,7 +895,11 @@ public final class PresetLoader {
         double number(Node n, Limits.Range range) {
             if (!n.json.isNumber()) throw fail(n.path, "must be a number, was " + describe(n.json));
             double v = n.json.asDouble();
-            if (!Double.isFinite(v) || !range.contains(v)) throw fail(n.path, "must be in " + range.text() + (range.unit.isEmpty() ? "" : " " + range.unit) + ", was " + n.json.asText());
+            if (!Double.isFinite(v)) throw fail(n.path, "must be in " + range.text() + (range.unit.isEmpty() ? "" : " " + range.unit) + ", was " + n.json.asText());
+            if (!range.contains(v)) {
+                found.add(fail(n.path, "must be in " + range.text() + (range.unit.isEmpty() ? "" : " " + range.unit) + ", was " + n.json.asText()));
+                return range.clamp(v);
+            }
             return v;
         }
 
@@ -862,7 +913,10 @@ public final class PresetLoader {
 
         int integer(Node n, Limits.Range range) {
             int v = integer(n);
-            if (!range.contains(v)) throw fail(n.path, "must be in " + range.text() + ", was " + v);
+            if (!range.contains(v)) {
+                found.add(fail(n.path, "must be in " + range.text() + ", was " + v));
+                return (int) range.clamp(v);
+            }
             return v;
         }
 

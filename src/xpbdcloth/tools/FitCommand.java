@@ -218,7 +218,8 @@ final class FitCommand implements Callable<Integer> {
     }
 
     private void print(MaterialFit fit, FitIteration it) {
-        int filled = (int) Math.round(20.0 * Math.min(it.index, maxIterations) / maxIterations);
+        // Against the iteration cap while it runs; whole once converged, which is usually far under the cap.
+        int filled = fit.converged() ? 20 : (int) Math.round(20.0 * Math.min(it.index, maxIterations) / maxIterations);
         StringBuilder s = new StringBuilder(String.format(Locale.ROOT, "[%s%s] it %2d  loss %.3e m²  rms %8.4f mm  |grad| %.2e ",
                 "#".repeat(filled), ".".repeat(20 - filled), it.index, it.loss, it.rms * 1e3, it.gradientNorm));
         for (int f = 0; f < it.compliance.length; f++)

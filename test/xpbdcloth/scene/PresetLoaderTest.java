@@ -28,6 +28,26 @@ class PresetLoaderTest {
     }
 
     /**
+     * A file's every problem at once, in the order it reads: a pin outside the grid (the cloth), a negative
+     * compliance (the families) and too many iterations (the solver) stop three parts that do not need each
+     * other; a number out of range does not stop even its own part (a density in the same cloth is found too).
+     */
+    @Test
+    void everyProblemOfAFileIsReportedAtOnce() {
+        String text = valid().replace("\"pins\": [\"top-left\"]", "\"pins\": [[9, 0]]").replace("\"arealDensity\": 0.2", "\"arealDensity\": -1")
+                .replace("\"compliance\": 0", "\"compliance\": -1").replace("\"iterations\": 2", "\"iterations\": 0");
+        PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse("t.json", text));
+        java.util.List<String> fields = e.all().stream().map(PresetException::field).collect(java.util.stream.Collectors.toList());
+        assertEquals(java.util.List.of("cloth.arealDensity", "cloth.pins[0]", "families.structural.compliance", "solver.iterations"), fields, e.getMessage());
+        assertEquals("cloth.arealDensity", e.field(), "the first problem is the exception's own");
+        assertEquals(4, e.getMessage().lines().count(), "a line each: " + e.getMessage());
+        assertTrue(e.getMessage().lines().allMatch(l -> l.startsWith("t.json: ")), e.getMessage());
+        // One problem stays one exception, as before.
+        PresetException one = assertThrows(PresetException.class, () -> PresetLoader.parse("t.json", valid().replace("\"iterations\": 2", "\"iterations\": 0")));
+        assertEquals(java.util.List.of(one), one.all());
+    }
+
+    /**
      * Every field within its range, and still a step of hours: 512² particles at 1000 iterations × 100
      * substeps. The product is limited, and the error names it with its factors; the same cloth at the
      * limit loads. Global solvers have their own, smaller limit (64² at 2 × 10).

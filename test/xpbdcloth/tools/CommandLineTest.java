@@ -42,6 +42,13 @@ class CommandLineTest {
         assertEquals(2, cli.execute("check", "hanging", bad.toString()));
         assertTrue(err.toString().contains(bad + ": (syntax): not valid JSON"), "problems go to standard error: " + err);
         assertFalse(out.toString().contains("not valid JSON"), out.toString());
+        // Every problem of a file, not the first only: a broken pin and a negative compliance are both said.
+        java.nio.file.Path two = java.nio.file.Files.writeString(dir.resolve("two.json"),
+                "{ \"name\": \"t\", \"cloth\": { \"columns\": 4, \"rows\": 4, \"width\": 1, \"height\": 1, \"arealDensity\": 0.2, \"pins\": [\"top\"] },"
+                + " \"families\": { \"structural\": { \"stiffness\": 1, \"compliance\": -1 } }, \"solver\": { \"mode\": \"XPBD\", \"iterations\": 2, \"dt\": 0.02 } }");
+        err.getBuffer().setLength(0);
+        assertEquals(2, cli.execute("check", two.toString()));
+        assertTrue(err.toString().contains(two + ": cloth.pins[0]: must be [row, col] or one of") && err.toString().contains(two + ": families.structural.compliance: must be in"), err.toString());
         out.getBuffer().setLength(0);
         assertEquals(0, cli.execute("check", "data/fabrics.json", "data/hanging.json"), "the shipped catalogue is recognised, not refused as a scene");
         assertTrue(out.toString().contains("data/fabrics.json: ok (a fabric catalogue: 9 fabrics)"), out.toString());

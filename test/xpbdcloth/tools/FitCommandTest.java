@@ -48,6 +48,9 @@ class FitCommandTest {
         assertEquals(0, run("fit", "--scene", "drape", "--observed", shape.toString(), "--start-factor", "0.1", "--out", dir.toString()), err.toString());
         assertTrue(out.toString().contains("converged after"), out.toString());
         assertTrue(out.toString().contains("[#"), "a progress bar: " + out);
+        // A fit that converged ends with a whole bar, not one that looks cut short against the iteration cap.
+        String lastBar = out.toString().lines().filter(l -> l.startsWith("[")).reduce((a, b) -> b).orElseThrow();
+        assertTrue(lastBar.startsWith("[" + "#".repeat(20) + "]"), lastBar);
         Preset fitted = PresetLoader.load(dir.resolve("drape-fitted.json"));
         Preset truth = PresetLoader.builtIn("drape");
         for (ConstraintFamily f : new ConstraintFamily[] {ConstraintFamily.STRUCTURAL, ConstraintFamily.SHEAR, ConstraintFamily.BEND})
