@@ -205,7 +205,7 @@ public final class ClothApp {
             state.fitRequested = false;
             if (!choosing) {
                 choosing = true;
-                app.selectInput("Fit to an observed rest shape (OBJ, the scene's vertex order)", "observationSelected", null, this);
+                FileChooser.open("Fit to an observed rest shape (OBJ, the scene's vertex order)", new File(app.sketchPath()), "Wavefront OBJ", "obj", this::observationSelected);
             }
         }
         state.advanceFit();
@@ -214,7 +214,7 @@ public final class ClothApp {
             // One chooser at a time, and the sketch ignores keys while it is open (they are meant for it).
             if (!choosing) {
                 choosing = true;
-                app.selectInput("Load a scene preset (JSON)", "presetSelected", null, this);
+                FileChooser.open("Load a scene preset (JSON)", new File(app.sketchPath()), "Scene presets", "json", this::presetSelected);
             }
         }
 
@@ -314,12 +314,13 @@ public final class ClothApp {
     }
 
     /** File chooser callback ('l'); a broken file keeps the current scene and shows why. */
-    public void presetSelected(File file) {
+    private void presetSelected(File file) {
         choosing = false;
         if (file != null) state.load(Path.of(file.getPath()));
     }
 
-    public void observationSelected(File file) {
+    /** File chooser callback ('p'): the fit starts against the chosen shape. */
+    private void observationSelected(File file) {
         choosing = false;
         if (file != null) state.startFit(Path.of(file.getPath()));
     }
