@@ -84,7 +84,7 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
      * bendStart[v] .. bendStart[v + 1] into bendColumn and bendValue (x, y, z interleaved). Summed once per
      * material change, it costs a particle a few dozen products where evaluating its dozen hinges cost some three hundred.
      */
-    private final int[] bendStart, bendColumn, bendEntry;
+    private final int[] bendStart, bendColumn, bendEntry, bendDiagonal;
     private final double[] bendValue;
     /** Colours of the particles: colour c is order[colourStart[c] .. colourStart[c + 1]). */
     final int[] order, colourStart;
@@ -255,7 +255,12 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
             bendStart[v + 1] = bendStart[v] + partners[v].length;
         }
         bendColumn = new int[bendStart[n]];
-        for (int v = 0; v < n; v++) System.arraycopy(partners[v], 0, bendColumn, bendStart[v], partners[v].length);
+        bendDiagonal = new int[n];
+        for (int v = 0; v < n; v++) {
+            System.arraycopy(partners[v], 0, bendColumn, bendStart[v], partners[v].length);
+            int at = Arrays.binarySearch(partners[v], v);
+            bendDiagonal[v] = at >= 0 ? bendStart[v] + at : -1;
+        }
         bendValue = new double[3 * bendStart[n]];
         final int slots2 = hingeSlots * hingeSlots;
         bendEntry = new int[slots2 * hingeCount];
@@ -502,11 +507,22 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
         }
 
         // Quadratic hinges: f = −Σ_u B_vu x_u per axis, H += diag(B_vv).
-        for (int e = bendStart[v], end = bendStart[v + 1]; e < end; e++) {
-            final int u = 3 * bendColumn[e], b3 = 3 * e;
-            final double bx = bendValue[b3], by = bendValue[b3 + 1], bz = bendValue[b3 + 2];
-            fx -= bx * x[u]; fy -= by * x[u + 1]; fz -= bz * x[u + 2];
-            if (u == kv) { h00 += bx; h11 += by; h22 += bz; }
+        {
+            double gx = 0, gy = 0, gz = 0;
+            int e = bendStart[v];
+            final int end = bendStart[v + 1];
+            for (; e + 1 < end; e += 2) {
+                final int u = 3 * bendColumn[e], b3 = 3 * e, u2 = 3 * bendColumn[e + 1];
+                fx -= bendValue[b3] * x[u]; fy -= bendValue[b3 + 1] * x[u + 1]; fz -= bendValue[b3 + 2] * x[u + 2];
+                gx -= bendValue[b3 + 3] * x[u2]; gy -= bendValue[b3 + 4] * x[u2 + 1]; gz -= bendValue[b3 + 5] * x[u2 + 2];
+            }
+            if (e < end) {
+                final int u = 3 * bendColumn[e], b3 = 3 * e;
+                fx -= bendValue[b3] * x[u]; fy -= bendValue[b3 + 1] * x[u + 1]; fz -= bendValue[b3 + 2] * x[u + 2];
+            }
+            fx += gx; fy += gy; fz += gz;
+            final int d = 3 * bendDiagonal[v];
+            if (d >= 0) { h00 += bendValue[d]; h11 += bendValue[d + 1]; h22 += bendValue[d + 2]; }
         }
 
         // Springs: U = ½ k (|d| − L)², d = x_v − x_other; H = k (n nᵀ + [C/|d|]₊ (I − n nᵀ)).
