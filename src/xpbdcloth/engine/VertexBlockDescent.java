@@ -506,7 +506,8 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
             h12 += muu * uy * uz + muw * (uy * wz + wy * uz) + mww * wy * wz;
         }
 
-        // Quadratic hinges: f = −Σ_u B_vu x_u per axis, H += diag(B_vv).
+        // Quadratic hinges: f = −Σ_u B_vu x_u per axis, H += diag(B_vv). Summed in two interleaved halves: a
+        // patch couples a particle to some thirty, and one running sum waits on each of its additions in turn.
         {
             double gx = 0, gy = 0, gz = 0;
             int e = bendStart[v];
