@@ -30,10 +30,33 @@ public abstract class Collider {
      */
     public static final double MAX_DEPENETRATION_SPEED = 10;
 
-    /** The depth (m) a contact leaves a particle at that started the substep {@code startDepth} inside (≤ 0: outside). */
-    static double leftInside(double startDepth, double h) {
-        return Math.max(0, startDepth - MAX_DEPENETRATION_SPEED * h);
+    /** This collider's own depenetration speed (m/s): {@link #MAX_DEPENETRATION_SPEED} unless a preset or the code sets it. */
+    private double depenetrationSpeed = MAX_DEPENETRATION_SPEED;
+
+    /** The fastest (m/s) this collider pushes out a particle found deep inside it; in [0.01, 1000] m/s. */
+    public Collider depenetrationSpeed(double metresPerSecond) {
+        depenetrationSpeed = Check.inRange("depenetrationSpeed", metresPerSecond, 0.01, 1000);
+        return this;
     }
+
+    public final double depenetrationSpeed() { return depenetrationSpeed; }
+
+    /**
+     * The depth (m) a contact leaves particle i at, {@code startDepth} being its depth (≤ 0: outside) at its
+     * previous position now. Contacts move the previous position out with the particle as they undo its start
+     * depth, so a later projection in the same substep measures less: what was undone is added back, and the
+     * particle comes out no more than the depenetration speed times h in a substep however many sweeps project
+     * it (with the depth measured afresh each sweep it came out that much in each: twice the speed at two sweeps).
+     * Only this collider's own undoing is added back: another's was along another normal (a box pressing cloth
+     * into the floor), and the floor, which has the last word, measures from where the particle is.
+     */
+    final double leftInside(Particles p, int i, double startDepth, double h) {
+        double start = startDepth + undoneHere(p, i);
+        return Math.max(0, start - depenetrationSpeed * h);
+    }
+
+    /** How far this collider has moved particle i's previous position out with it this substep. */
+    private double undoneHere(Particles p, int i) { return p.depenetratedBy[i] == this ? p.depenetrated[i] : 0; }
 
     /**
      * After a contact moved particle k (index 3i) out by {@code correction} along n: the part of it that only
@@ -44,10 +67,15 @@ public abstract class Collider {
      * stops the particle's own motion into the surface still removes that motion's velocity, as a contact must.
      * Returns the depth undone (0 for a particle that started outside).
      */
-    static double depenetrateWithoutVelocity(Particles p, int k, double nx, double ny, double nz, double correction, double startDepth, double h) {
-        double undone = Math.min(correction, startDepth - leftInside(startDepth, h));
+    final double depenetrateWithoutVelocity(Particles p, int k, double nx, double ny, double nz, double correction, double startDepth, double h) {
+        final int i = k / 3;
+        // Of the depth it started the substep inside, what this substep may undo, less what it already has.
+        final double already = undoneHere(p, i);
+        double undone = Math.min(correction, startDepth + already - leftInside(p, i, startDepth, h) - already);
         if (!(undone > TOUCHING_DEPTH)) return 0;
         p.prev[k] += undone * nx; p.prev[k + 1] += undone * ny; p.prev[k + 2] += undone * nz;
+        p.depenetrated[i] = already + undone;
+        p.depenetratedBy[i] = this;
         return undone;
     }
 

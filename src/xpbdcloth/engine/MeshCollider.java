@@ -420,13 +420,13 @@ public final class MeshCollider extends RigidCollider {
         double[] point = work[0], scratch = work[1];
         double c = constraint(p, j, point, scratch);
         if (c >= 0) return;
-        double correction = -c - Collider.leftInside(contactStartDepth[j], h);
+        double correction = -c - leftInside(p, i, contactStartDepth[j], h);
         if (correction <= 0) return;
         double nx = scratch[6], ny = scratch[7], nz = scratch[8];
         int k = 3 * i;
         p.x[k] += correction * nx; p.x[k + 1] += correction * ny; p.x[k + 2] += correction * nz;
         // The start moved out with it: the next projection of this contact undoes no more than is left.
-        contactStartDepth[j] -= Collider.depenetrateWithoutVelocity(p, k, nx, ny, nz, correction, contactStartDepth[j], h);
+        contactStartDepth[j] -= depenetrateWithoutVelocity(p, k, nx, ny, nz, correction, contactStartDepth[j], h);
         // The surface's velocity at the closest point: its triangle's vertices' motion over the substep.
         int t = contactTriangle[j];
         double vx = 0, vy = 0, vz = 0;

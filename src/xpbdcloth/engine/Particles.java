@@ -21,6 +21,13 @@ public final class Particles {
     final double[] mass;
     /** External forces accumulated for the next step (N), cleared after it. */
     final double[] force;
+    /**
+     * How far (m) contacts have moved each particle's previous position out with it this substep, undoing the
+     * depth it started inside a collider at ({@link Collider#depenetrateWithoutVelocity}); cleared each substep.
+     */
+    final double[] depenetrated;
+    /** The collider each particle's {@link #depenetrated} is owed to (another's normal is another direction). */
+    final Collider[] depenetratedBy;
 
     /** {@code count} particles at the origin, each of mass 1 kg. */
     public Particles(int count) {
@@ -29,6 +36,8 @@ public final class Particles {
         prev = new double[3 * count];
         v = new double[3 * count];
         force = new double[3 * count];
+        depenetrated = new double[count];
+        depenetratedBy = new Collider[count];
         w = new double[count];
         mass = new double[count];
         java.util.Arrays.fill(w, 1.0);

@@ -69,10 +69,10 @@ final class ShapeCollisionConstraint {
         // Out no faster than the depenetration speed from where it started inside (n is kept: the
         // distance at the start is taken into a scratch normal).
         double startDepth = -(s.distance(ax, ay, az, work[2]) - s.margin);
-        double normalCorrection = -fb - Collider.leftInside(startDepth, h);
+        double normalCorrection = -fb - s.leftInside(p, i, startDepth, h);
         if (normalCorrection <= 0) return;
         x[k] += normalCorrection * nx; x[k + 1] += normalCorrection * ny; x[k + 2] += normalCorrection * nz;
-        Collider.depenetrateWithoutVelocity(p, k, nx, ny, nz, normalCorrection, startDepth, h);
+        s.depenetrateWithoutVelocity(p, k, nx, ny, nz, normalCorrection, startDepth, h);
         // Surface velocity where the particle now touches: v + ω × (x − c).
         double rx = x[k] - s.cx, ry = x[k + 1] - s.cy, rz = x[k + 2] - s.cz;
         double vsx = s.vx + s.omegaY * rz - s.omegaZ * ry;

@@ -70,7 +70,7 @@ public final class SphereCollisionConstraint {
         if (C >= 0) return s.isFast(h) ? sweptContact(p, i, s, h) : 0;
         // Out no faster than the depenetration speed from where it started inside (the sphere then at c − h v).
         double ax = p.prev[k] - (s.cx - h * s.vx), ay = p.prev[k + 1] - (s.cy - h * s.vy), az = p.prev[k + 2] - (s.cz - h * s.vz);
-        C += Collider.leftInside(s.radius + s.margin - Math.sqrt(ax * ax + ay * ay + az * az), h);
+        C += s.leftInside(p, i, s.radius + s.margin - Math.sqrt(ax * ax + ay * ay + az * az), h);
         if (C >= 0) return 0;
         double nx, ny, nz;
         if (len < DistanceBlock.MIN_LENGTH) { nx = 0; ny = 1; nz = 0; }

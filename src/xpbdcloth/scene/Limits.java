@@ -56,6 +56,8 @@ public final class Limits {
     public static final Range DAMPING = new Range(0, 100, "1/s");
     public static final Range SPHERE_RADIUS = new Range(1e-3, 100, "m");
     public static final Range MARGIN = new Range(0, 1, "m");
+    /** The fastest a collider pushes out a particle found deep inside it (the engine's check, {@code Collider.depenetrationSpeed}). */
+    public static final Range DEPENETRATION_SPEED = new Range(0.01, 1000, "m/s");
     /** The cloth's thickness against itself. */
     public static final Range THICKNESS = new Range(1e-4, 1, "m");
     /** Each component of a plane's normal (any length from 1e-3 up: it is normalised). */

@@ -65,13 +65,14 @@ public final class Preset {
         public final String file;
         public final xpbdcloth.mesh.BodyMesh mesh;
         public final boolean loop;
-        public final double margin, staticFriction, kineticFriction;
+        public final double margin, staticFriction, kineticFriction, depenetrationSpeed;
         public final double[] angularVelocity;
         public final PathSpec path;
 
-        BodySpec(String file, xpbdcloth.mesh.BodyMesh mesh, boolean loop, double margin, double staticFriction, double kineticFriction, double[] angularVelocity, PathSpec path) {
+        BodySpec(String file, xpbdcloth.mesh.BodyMesh mesh, boolean loop, double margin, double staticFriction, double kineticFriction, double[] angularVelocity, PathSpec path,
+                 double depenetrationSpeed) {
             this.file = file; this.mesh = mesh; this.loop = loop; this.margin = margin; this.staticFriction = staticFriction;
-            this.kineticFriction = kineticFriction; this.angularVelocity = angularVelocity; this.path = path;
+            this.kineticFriction = kineticFriction; this.angularVelocity = angularVelocity; this.path = path; this.depenetrationSpeed = depenetrationSpeed;
         }
     }
 
@@ -191,11 +192,11 @@ public final class Preset {
     /** A fixed plane collider: a point of its surface and the normal of the side the cloth stays on. */
     public static final class PlaneSpec {
         public final double[] point, normal;
-        public final double margin, staticFriction, kineticFriction;
+        public final double margin, staticFriction, kineticFriction, depenetrationSpeed;
 
-        PlaneSpec(double[] point, double[] normal, double margin, double staticFriction, double kineticFriction) {
+        PlaneSpec(double[] point, double[] normal, double margin, double staticFriction, double kineticFriction, double depenetrationSpeed) {
             this.point = point; this.normal = normal; this.margin = margin;
-            this.staticFriction = staticFriction; this.kineticFriction = kineticFriction;
+            this.staticFriction = staticFriction; this.kineticFriction = kineticFriction; this.depenetrationSpeed = depenetrationSpeed;
         }
     }
 
@@ -238,15 +239,15 @@ public final class Preset {
         public final double[] axis;
         /** capsule: half length between its caps' centres and radius (m). */
         public final double halfLength, radius;
-        public final double margin, staticFriction, kineticFriction;
+        public final double margin, staticFriction, kineticFriction, depenetrationSpeed;
         public final double[] angularVelocity;
         public final PathSpec path;
 
         SolidSpec(String type, double[] halfExtents, double[] rotation, double[] axis, double halfLength, double radius,
-                  double margin, double staticFriction, double kineticFriction, double[] angularVelocity, PathSpec path) {
+                  double margin, double staticFriction, double kineticFriction, double[] angularVelocity, PathSpec path, double depenetrationSpeed) {
             this.type = type; this.halfExtents = halfExtents; this.rotation = rotation; this.axis = axis;
             this.halfLength = halfLength; this.radius = radius; this.margin = margin; this.staticFriction = staticFriction;
-            this.kineticFriction = kineticFriction; this.angularVelocity = angularVelocity; this.path = path;
+            this.kineticFriction = kineticFriction; this.angularVelocity = angularVelocity; this.path = path; this.depenetrationSpeed = depenetrationSpeed;
         }
 
         /** The largest distance from the centre to the solid's surface, m. */
@@ -258,7 +259,7 @@ public final class Preset {
 
     /** A kinematic sphere and its path: fixed, linear, circle or oscillation. */
     public static final class SphereSpec {
-        public final double radius, margin, staticFriction, kineticFriction;
+        public final double radius, margin, staticFriction, kineticFriction, depenetrationSpeed;
         public final double[] angularVelocity;
         public final String path;
         /** fixed: centre; linear: start; circle and oscillation: centre. */
@@ -271,7 +272,8 @@ public final class Preset {
         public final double rate;
 
         SphereSpec(double radius, double margin, double staticFriction, double kineticFriction, double[] angularVelocity,
-                   String path, double[] centre, double[] vector, double pathRadius, double rate) {
+                   String path, double[] centre, double[] vector, double pathRadius, double rate, double depenetrationSpeed) {
+            this.depenetrationSpeed = depenetrationSpeed;
             this.radius = radius; this.margin = margin; this.staticFriction = staticFriction;
             this.kineticFriction = kineticFriction; this.angularVelocity = angularVelocity; this.path = path;
             this.centre = centre; this.vector = vector; this.pathRadius = pathRadius; this.rate = rate;

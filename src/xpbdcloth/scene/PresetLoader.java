@@ -650,11 +650,11 @@ public final class PresetLoader {
 
         /** A collider of the "colliders" list: so far a plane (spheres are listed under "spheres"). */
         Preset.PlaneSpec plane(Node n) {
-            object(n, Set.of("type", "point", "normal", "margin", "staticFriction", "kineticFriction"));
+            object(n, Set.of("type", "point", "normal", "margin", "staticFriction", "kineticFriction", "depenetrationSpeed"));
             double[] point = vector(required(n, "point"), Limits.POSITION);
             double[] normal = direction(required(n, "normal"));
             return new Preset.PlaneSpec(point, normal, margin(n), number(required(n, "staticFriction"), Limits.FRICTION),
-                    number(required(n, "kineticFriction"), Limits.FRICTION));
+                    number(required(n, "kineticFriction"), Limits.FRICTION), depenetrationSpeed(n));
         }
 
         /** The cloth's thickness against itself: no more than its shortest edge at rest. */
@@ -682,10 +682,16 @@ public final class PresetLoader {
             return m == null ? 0 : number(m, Limits.MARGIN);
         }
 
+        /** The fastest a collider pushes out a particle found deep inside it (m/s); PhysX's maximum depenetration velocity. */
+        double depenetrationSpeed(Node n) {
+            Node d = optional(n, "depenetrationSpeed");
+            return d == null ? xpbdcloth.engine.Collider.MAX_DEPENETRATION_SPEED : number(d, Limits.DEPENETRATION_SPEED);
+        }
+
         /** A box (half extents, rotation) or a capsule (axis, half length, radius), with path, spin and friction. */
         Preset.SolidSpec solid(Node n, String type) {
             boolean box = type.equals("box");
-            Set<String> allowed = new java.util.HashSet<>(Set.of("type", "margin", "staticFriction", "kineticFriction", "angularVelocity", "path"));
+            Set<String> allowed = new java.util.HashSet<>(Set.of("type", "margin", "staticFriction", "kineticFriction", "angularVelocity", "path", "depenetrationSpeed"));
             allowed.addAll(box ? Set.of("halfExtents", "rotation") : Set.of("axis", "halfLength", "radius"));
             object(n, allowed);
             double mus = number(required(n, "staticFriction"), Limits.FRICTION);
@@ -696,10 +702,10 @@ public final class PresetLoader {
             if (box) {
                 double[] half = vector(required(n, "halfExtents"), Limits.SPHERE_RADIUS);
                 Node r = optional(n, "rotation");
-                return new Preset.SolidSpec(type, half, r == null ? new double[3] : vector(r, Limits.ROTATION), null, 0, 0, margin(n), mus, muk, omega, path);
+                return new Preset.SolidSpec(type, half, r == null ? new double[3] : vector(r, Limits.ROTATION), null, 0, 0, margin(n), mus, muk, omega, path, depenetrationSpeed(n));
             }
             return new Preset.SolidSpec(type, null, null, direction(required(n, "axis")), number(required(n, "halfLength"), Limits.PATH_RADIUS),
-                    number(required(n, "radius"), Limits.SPHERE_RADIUS), margin(n), mus, muk, omega, path);
+                    number(required(n, "radius"), Limits.SPHERE_RADIUS), margin(n), mus, muk, omega, path, depenetrationSpeed(n));
         }
 
         /** Where a mesh file is put in the scene: a uniform scale, then rotations about x, y, z (degrees), then a move. */
@@ -734,7 +740,8 @@ public final class PresetLoader {
          * path and spin about the path's start (default: fixed at the origin, the mesh where its file puts it).
          */
         Preset.BodySpec body(Node n) {
-            object(n, Set.of("type", "file", "fps", "loop", "scale", "rotation", "translation", "margin", "staticFriction", "kineticFriction", "angularVelocity", "path"));
+            object(n, Set.of("type", "file", "fps", "loop", "scale", "rotation", "translation", "margin", "staticFriction", "kineticFriction", "angularVelocity", "path",
+                    "depenetrationSpeed"));
             Node f = required(n, "file");
             String name = string(f);
             Node fp = optional(n, "fps"), lp = optional(n, "loop");
@@ -757,7 +764,7 @@ public final class PresetLoader {
                 for (int i = 0; i < shapes[k].length; i++)
                     if (!Limits.POSITION.contains(shapes[k][i]))
                         throw fail(n.path, "vertex " + i / 3 + (body.animated() ? " of frame " + k : "") + " lands at " + shapes[k][i] + " on axis " + "xyz".charAt(i % 3) + ", outside " + Limits.POSITION.text() + " m");
-            return new Preset.BodySpec(name, body, loop, margin(n), mus, muk, omega, path);
+            return new Preset.BodySpec(name, body, loop, margin(n), mus, muk, omega, path, depenetrationSpeed(n));
         }
 
         /**
@@ -779,14 +786,14 @@ public final class PresetLoader {
         }
 
         Preset.SphereSpec sphere(Node n) {
-            object(n, Set.of("type", "radius", "margin", "staticFriction", "kineticFriction", "angularVelocity", "path"));
+            object(n, Set.of("type", "radius", "margin", "staticFriction", "kineticFriction", "angularVelocity", "path", "depenetrationSpeed"));
             double radius = number(required(n, "radius"), Limits.SPHERE_RADIUS);
             double mus = number(required(n, "staticFriction"), Limits.FRICTION);
             double muk = number(required(n, "kineticFriction"), Limits.FRICTION);
             Node w = optional(n, "angularVelocity");
             double[] omega = w == null ? new double[3] : vector(w, Limits.ANGULAR_VELOCITY);
             Preset.PathSpec p = path(required(n, "path"));
-            return new Preset.SphereSpec(radius, margin(n), mus, muk, omega, p.type, p.centre, p.vector, p.radius, p.rate);
+            return new Preset.SphereSpec(radius, margin(n), mus, muk, omega, p.type, p.centre, p.vector, p.radius, p.rate, depenetrationSpeed(n));
         }
 
         /** A collider's path: fixed, linear, circle or oscillation. */

@@ -57,22 +57,28 @@ public final class Scene {
             simulation.add(new Aerodynamics(cloth.triangles(), a.density, a.drag, a.lift).air(a.air[0], a.air[1], a.air[2]));
         }
 
-        for (Preset.PlaneSpec pl : preset.planes)
-            simulation.add(new Plane(pl.point, pl.normal, pl.margin, pl.staticFriction, pl.kineticFriction));
+        for (Preset.PlaneSpec pl : preset.planes) {
+            Plane plane = new Plane(pl.point, pl.normal, pl.margin, pl.staticFriction, pl.kineticFriction);
+            plane.depenetrationSpeed(pl.depenetrationSpeed);
+            simulation.add(plane);
+        }
         if (preset.selfCollision != null) simulation.selfCollision(selfCollision(cloth, preset.selfCollision));
         for (Preset.SolidSpec sp : preset.solids) {
             RigidCollider solid = sp.type.equals("box")
                     ? new Box(path(sp.path), sp.halfExtents, sp.rotation, sp.margin, sp.staticFriction, sp.kineticFriction)
                     : new Capsule(path(sp.path), sp.axis, sp.halfLength, sp.radius, sp.margin, sp.staticFriction, sp.kineticFriction);
+            solid.depenetrationSpeed(sp.depenetrationSpeed);
             simulation.add(solid.spin(sp.angularVelocity[0], sp.angularVelocity[1], sp.angularVelocity[2]));
         }
         for (Preset.BodySpec b : preset.bodies) {
             MeshCollider body = new MeshCollider(path(b.path), b.mesh.vertices, b.mesh.triangles, b.mesh.frames, b.mesh.fps, b.loop, b.margin, b.staticFriction, b.kineticFriction);
+            body.depenetrationSpeed(b.depenetrationSpeed);
             simulation.add(body.spin(b.angularVelocity[0], b.angularVelocity[1], b.angularVelocity[2]));
         }
         for (Preset.SphereSpec sp : preset.spheres) {
             Sphere sphere = new Sphere(path(sp), sp.radius, sp.margin, sp.staticFriction, sp.kineticFriction)
                     .spin(sp.angularVelocity[0], sp.angularVelocity[1], sp.angularVelocity[2]);
+            sphere.depenetrationSpeed(sp.depenetrationSpeed);
             simulation.add(sphere);
         }
 

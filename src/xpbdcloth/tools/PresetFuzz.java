@@ -60,13 +60,13 @@ final class PresetFuzz {
 
     /** The preset a seed draws (its text only, nothing run). */
     static String text(long seed) {
-        return new Case(new Random(seed)).json();
+        return new Case(new Random(seed), new Random(~seed)).json();
     }
 
     /** One case: null if it passed, else why not. */
     static String runCase(long seed) {
         Random r = new Random(seed);
-        Case c = new Case(r);
+        Case c = new Case(r, new Random(~seed));
         String text = c.json();
         if (c.brokenField != null) {
             try {
@@ -97,7 +97,18 @@ final class PresetFuzz {
         int steps;
         final StringBuilder json = new StringBuilder();
 
-        Case(Random r) { this.r = r; }
+        /** Draws of fields added later, apart, so that a seed's other draws stay what they were. */
+        final Random later;
+
+        Case(Random r, Random later) { this.r = r; this.later = later; }
+
+        /** A collider's depenetration speed, in one collider of two (else the engine's default). */
+        String depenetration() {
+            if (later.nextBoolean()) return "";
+            Limits.Range d = Limits.DEPENETRATION_SPEED;
+            double v = later.nextInt(4) == 0 ? (later.nextBoolean() ? d.lo : d.hi) : Math.exp(Math.log(d.lo) + later.nextDouble() * Math.log(d.hi / d.lo));
+            return ", \"depenetrationSpeed\": " + num(v);
+        }
 
         /** Uniform in the range, or one of its edges one time in four; log-uniform for positive ranges. */
         double draw(Limits.Range range, boolean log) {
@@ -228,7 +239,7 @@ final class PresetFuzz {
                         .append(", \"margin\": ").append(num(Math.min(0.999 * halfEdge, draw(Limits.MARGIN, false))))
                         .append(", \"staticFriction\": ").append(num(draw(Limits.FRICTION, false)))
                         .append(", \"kineticFriction\": ").append(num(draw(Limits.FRICTION, false)))
-                        .append(", \"angularVelocity\": ").append(vec(Limits.ANGULAR_VELOCITY)).append(", \"path\": ").append(path()).append(" }");
+                        .append(", \"angularVelocity\": ").append(vec(Limits.ANGULAR_VELOCITY)).append(", \"path\": ").append(path()).append(depenetration()).append(" }");
                 }
                 json.append("]");
             }
@@ -252,7 +263,7 @@ final class PresetFuzz {
                             .append(", \"staticFriction\": ").append(num(draw(Limits.FRICTION, false)))
                             .append(", \"kineticFriction\": ").append(num(draw(Limits.FRICTION, false)));
                         if (r.nextBoolean()) json.append(", \"angularVelocity\": ").append(vec(Limits.ANGULAR_VELOCITY)).append(", \"path\": ").append(path());
-                        json.append(" }");
+                        json.append(depenetration()).append(" }");
                         continue;
                     }
                     if (kind == 2) { // a plane: any point, a normal not near zero
@@ -260,7 +271,7 @@ final class PresetFuzz {
                             .append(num(r.nextDouble() * 2 - 1)).append(", ").append(num(0.5 + 0.5 * r.nextDouble())).append(", ").append(num(r.nextDouble() * 2 - 1))
                             .append("], \"margin\": ").append(num(Math.min(0.999 * halfEdge, draw(Limits.MARGIN, false))))
                             .append(", \"staticFriction\": ").append(num(draw(Limits.FRICTION, false)))
-                            .append(", \"kineticFriction\": ").append(num(draw(Limits.FRICTION, false))).append(" }");
+                            .append(", \"kineticFriction\": ").append(num(draw(Limits.FRICTION, false))).append(depenetration()).append(" }");
                         continue;
                     }
                     if (kind == 3) json.append("{ \"type\": \"sphere\", \"radius\": ").append(num(draw(Limits.SPHERE_RADIUS, true)));
@@ -270,7 +281,7 @@ final class PresetFuzz {
                     json.append(", \"margin\": ").append(num(Math.min(0.999 * halfEdge, draw(Limits.MARGIN, false))))
                         .append(", \"staticFriction\": ").append(num(draw(Limits.FRICTION, false)))
                         .append(", \"kineticFriction\": ").append(num(draw(Limits.FRICTION, false)))
-                        .append(", \"angularVelocity\": ").append(vec(Limits.ANGULAR_VELOCITY)).append(", \"path\": ").append(path()).append(" }");
+                        .append(", \"angularVelocity\": ").append(vec(Limits.ANGULAR_VELOCITY)).append(", \"path\": ").append(path()).append(depenetration()).append(" }");
                 }
                 json.append("]");
             }
