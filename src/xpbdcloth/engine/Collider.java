@@ -69,12 +69,12 @@ public abstract class Collider {
      */
     final double depenetrateWithoutVelocity(Particles p, int k, double nx, double ny, double nz, double correction, double startDepth, double h) {
         final int i = k / 3;
-        // Of the depth it started the substep inside, what this substep may undo, less what it already has.
-        final double already = undoneHere(p, i);
-        double undone = Math.min(correction, startDepth + already - leftInside(p, i, startDepth, h) - already);
+        // Of the depth it started the substep inside (startDepth plus what it undid already), what this substep
+        // may undo, less what it already has: startDepth less the depth it is to be left at.
+        double undone = Math.min(correction, startDepth - leftInside(p, i, startDepth, h));
         if (!(undone > TOUCHING_DEPTH)) return 0;
         p.prev[k] += undone * nx; p.prev[k + 1] += undone * ny; p.prev[k + 2] += undone * nz;
-        p.depenetrated[i] = already + undone;
+        p.depenetrated[i] = undoneHere(p, i) + undone;
         p.depenetratedBy[i] = this;
         return undone;
     }

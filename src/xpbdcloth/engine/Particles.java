@@ -29,6 +29,12 @@ public final class Particles {
     /** The collider each particle's {@link #depenetrated} is owed to (another's normal is another direction). */
     final Collider[] depenetratedBy;
 
+    /** At each substep's start: no contact has undone any particle's depth yet. */
+    void clearDepenetration() {
+        java.util.Arrays.fill(depenetrated, 0);
+        java.util.Arrays.fill(depenetratedBy, null);
+    }
+
     /** {@code count} particles at the origin, each of mass 1 kg. */
     public Particles(int count) {
         this.count = Check.inRange("particleCount", count, 1, EngineRange.MAX_PARTICLES);

@@ -341,8 +341,7 @@ public final class Simulation {
         for (int s = 0; s < substeps; s++) {
             final double t = time + h;
             predict(h);
-            java.util.Arrays.fill(particles.depenetrated, 0);
-            java.util.Arrays.fill(particles.depenetratedBy, null);
+            particles.clearDepenetration();
             System.arraycopy(particles.x, 0, prediction, 0, prediction.length);
             observer.after(Stage.PREDICT);
             moveKinematics(t, h);
