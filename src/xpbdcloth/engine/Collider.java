@@ -104,4 +104,10 @@ public abstract class Collider {
 
     /** The second particle of contact i, or −1 when the other side is a solid. */
     int partner(int i) { return -1; }
+
+    /**
+     * Whether this collider moved or turned over the last substep: its contacts can then do work on the
+     * cloth, which a still one cannot (it only takes energy out, by friction and inelastic pushes).
+     */
+    boolean moving() { return false; }
 }

@@ -63,6 +63,8 @@ public abstract class RigidCollider extends Collider {
         vx = (cx - pcx) / h; vy = (cy - pcy) / h; vz = (cz - pcz) / h;
     }
 
+    @Override boolean moving() { return vx != 0 || vy != 0 || vz != 0 || omegaX != 0 || omegaY != 0 || omegaZ != 0; }
+
     private void pose(double t) {
         path.centreAt(t, centre);
         cx = centre[0]; cy = centre[1]; cz = centre[2];

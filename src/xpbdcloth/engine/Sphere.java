@@ -50,6 +50,8 @@ public final class Sphere extends Collider {
         spinAngle += Math.sqrt(omegaX * omegaX + omegaY * omegaY + omegaZ * omegaZ) * h;
     }
 
+    @Override boolean moving() { return vx != 0 || vy != 0 || vz != 0 || omegaX != 0 || omegaY != 0 || omegaZ != 0; }
+
     /**
      * Whether the centre moved more than a quarter of the radius over the last substep of length h: then
      * contacts are found and solved along the sphere's path, not only at its end (no tunnelling).

@@ -27,6 +27,10 @@ import java.util.List;
  * energy's minimum, the converged cloth. What few sweeps cost is lag while the cloth moves, not a
  * softer rest.
  *
+ * <p>A few sweeps leave the step short of its minimum, and on a cloth far stiffer than its inertia what they
+ * leave can come back as speed: each substep ends with the energy checked against implicit Euler's bound
+ * and the speed scaled down where the sweeps exceeded it ({@link #withoutEnergyGain}).
+ *
  * <p>Particles of one colour share no energy term, so a colour's particles can be solved in any order or
  * on any number of threads with the same result. Membrane triangles, quadratic hinges, springs and tethers
  * have closed forms here ({@link #takes}).
@@ -47,6 +51,8 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
     private final int n;
     /** The inertial target y of the substep. */
     private final double[] target;
+    /** The substep's start without motion: the free particles where the substep began, the pinned where they are now. */
+    private final double[] stillStart;
 
     // Membrane triangles: particles, D⁻¹ (P, Q, R, S), K = Σ_r r rᵀ/α_r (K00, K01, K11, K22) and their source rows.
     private final int[] triParticle;
@@ -145,6 +151,8 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
         this.team = team;
         n = particles.count();
         target = new double[3 * n];
+        stillStart = new double[3 * n];
+        keptPositions = new double[3 * n];
         contactStart = new int[n + 1];
         List<ConstraintBlock> projected = new ArrayList<>();
         List<MembraneBlock> membranes = new ArrayList<>();
@@ -160,6 +168,7 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
             else tethers.add((TetherBlock) b);
         }
         rest = SweepOrder.asBuilt(projected);
+        projectedBlocks = projected.toArray(new ConstraintBlock[0]);
         this.attachments = attachments;
         firstFamily = !membranes.isEmpty() ? ConstraintFamily.MEMBRANE : !hinges.isEmpty() ? ConstraintFamily.DIHEDRAL
                 : !springs.isEmpty() ? springs.get(0).family() : ConstraintFamily.TETHER;
@@ -369,6 +378,10 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
 
     int colours() { return colourCount; }
 
+    /** The blocks projected after each iteration, and whether any of them has an energy (a compliance). */
+    private final ConstraintBlock[] projectedBlocks;
+    private boolean restHasEnergy;
+
     /** The blocks whose compliances the stiffnesses come from, and the sum of their material versions last derived. */
     private final ConstraintBlock[] stiffnessSources;
     private long refreshedFor = -1;
@@ -377,6 +390,7 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
     private long materialVersion() {
         long sum = 0;
         for (ConstraintBlock b : stiffnessSources) sum += b.materialVersion();
+        for (ConstraintBlock b : projectedBlocks) sum += b.materialVersion();
         return sum;
     }
 
@@ -405,9 +419,32 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
                     }
             }
         for (int s = 0; s < springBlock.length; s++) springStiffness[s] = 1 / springBlock[s].compliance(springRow[s]);
+        restHasEnergy = false;
+        for (ConstraintBlock b : projectedBlocks)
+            for (int i = 0; i < b.count(); i++) if (b.compliance(i) > 0) restHasEnergy = true;
     }
 
     @Override public void solve(int substep, int iterations) {
+        begin(substep);
+        this.iterations = iterations;
+        if (team != null) {
+            team.run(this);
+            withoutEnergyGain();
+            return;
+        }
+        if (bounded) budgetAndStart(0, 1);
+        listener.afterSweep(sim, substep, -1);
+        for (int it = 0; it < iterations; it++) {
+            for (int c = 0, nc = colours(); c < nc; c++) solveColour(c, 0, 1);
+            rest.sweep(particles, ctx);
+            listener.afterSweep(sim, substep, it);
+        }
+        if (bounded) sumEndEnergy(0, 1);
+        withoutEnergyGain();
+    }
+
+    /** The substep's target y and start, its contacts by particle, and the colours if the pair list changed. */
+    private void begin(int substep) {
         if (substep == 0) {
             long version = materialVersion();
             if (version != refreshedFor) { refreshStiffness(); refreshedFor = version; }
@@ -426,6 +463,16 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
             x[k + 1] -= h2 * (gy + wi * f[k + 1]);
             x[k + 2] -= h2 * (gz + wi * f[k + 2]);
         }
+        inverseH2 = 1 / h2;
+        endMaterialKnown = stillIsLastEnd(substep);
+        bounded = boundHolds();
+        endMaterialSummed = bounded;
+        choosing = bounded && wary > 0;
+        if (wary > 0) wary--;
+        if (bounded && restHasEnergy) {
+            stillProjectedEnergy = endMaterialKnown ? endProjectedEnergy : projectedEnergyAtStill();
+            if (choosing) inertialProjectedEnergy = projectedEnergy();
+        }
         contactOf = contacts.byParticle(n, contactStart, contactOf);
         SelfCollision self = sim.selfCollision();
         long build = self == null ? -1 : self.builds();
@@ -433,24 +480,269 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
             colour(self);
             colouredForBuild = build;
         }
-        this.iterations = iterations;
-        inverseH2 = 1 / h2;
-        if (team != null) {
-            team.run(this);
+    }
+
+    /**
+     * Sums, on this thread's chunks, G at the still start (the budget {@link #withoutEnergyGain} holds the
+     * substep to) and, while wary, at the inertial start, and starts the iterations from the lower: each
+     * particle's step lowers G, so the iterations then end within the budget. From the inertial start they
+     * may not: on a stiff membrane, carrying a turning triangle along its velocity stretches it, and
+     * G(x_prev + h v) can exceed G(x_prev) by more than the sweeps take out. At rest the two starts are one
+     * point, and a cloth in flight keeps the inertial start (moving it whole stretches nothing). The
+     * inertial start's energy costs a sum over the material, so it is taken only for {@link #WARY} substeps
+     * after the bound last had to step in (a calm scene never pays it; the bound is checked always). The
+     * still start's material energy is the last substep's end's, where the free particles still are, unless
+     * a step began since (a material or a position may have been set between steps) or a pin was moved.
+     * The team waits after placing and after summing, and every thread takes the same decision from the
+     * same sums.
+     */
+    private void budgetAndStart(int id, int threads) {
+        final double[] x = particles.x;
+        placeStill(id, threads);
+        if (threads > 1) team.await();
+        for (int c = id; c < CHUNKS; c += threads)
+            stillEnergy[c] = energyChunk(stillStart, target, c, endMaterialKnown ? endMaterial[c] : materialChunk(stillStart, c), null);
+        if (!choosing) return;
+        for (int c = id; c < CHUNKS; c += threads) inertialEnergy[c] = energyChunk(x, target, c, materialChunk(x, c), null);
+        if (threads > 1) team.await();
+        double still = restHasEnergy ? stillProjectedEnergy : 0, inertial = restHasEnergy ? inertialProjectedEnergy : 0;
+        for (int c = 0; c < CHUNKS; c++) { still += stillEnergy[c]; inertial += inertialEnergy[c]; }
+        if (still < inertial) {
+            final int from = 3 * share(n, id, threads), to = 3 * share(n, id + 1, threads);
+            System.arraycopy(stillStart, from, x, from, to - from);
+            if (threads > 1) team.await();
+        }
+    }
+
+    /** This thread's chunks of the energy at the iterations' end, about x_prev: ½|v'|²_M + E(x'). */
+    private void sumEndEnergy(int id, int threads) {
+        final double[] x = particles.x;
+        for (int c = id; c < CHUNKS; c += threads) {
+            endMaterial[c] = materialChunk(x, c);
+            endEnergy[c] = energyChunk(x, particles.prev, c, endMaterial[c], endInertia);
+        }
+    }
+
+    /** Whether the still start's material energy is the last substep's end's: a later substep of the same step, no pin moved. */
+    private boolean stillIsLastEnd(int substep) {
+        if (substep == 0 || !endMaterialSummed) return false;
+        final double[] x = particles.x, prev = particles.prev, w = particles.w;
+        for (int v = 0; v < n; v++)
+            if (w[v] == 0 && (x[3 * v] != prev[3 * v] || x[3 * v + 1] != prev[3 * v + 1] || x[3 * v + 2] != prev[3 * v + 2])) return false;
+        return true;
+    }
+
+    /**
+     * The energy sums are taken in this many chunks, each summed alone and then added in chunk order, so that
+     * they are the same bits on any number of threads (a thread takes every threads-th chunk).
+     */
+    private static final int CHUNKS = 8;
+    /** Per chunk: G at the still start; the energy at the iterations' end and, of it, the inertia about x_prev (½|v'|²_M). */
+    private final double[] stillEnergy = new double[CHUNKS], inertialEnergy = new double[CHUNKS], endEnergy = new double[CHUNKS], endInertia = new double[CHUNKS];
+    /** Per chunk, the material's energy at the last substep's end; whether it was summed, and is this substep's still start's. */
+    private final double[] endMaterial = new double[CHUNKS];
+    private boolean endMaterialSummed, endMaterialKnown;
+    /** Whether the energy bound holds this substep ({@link #boundHolds}), and whether its start is chosen ({@link #budgetAndStart}). */
+    private boolean bounded, choosing;
+    /** Substeps after the bound took speed out during which the start is chosen; how many are left. */
+    static final int WARY = 20;
+    private int wary;
+    /** The projected blocks' energy at the still start, the inertial start and the last substep's end; where x is kept meanwhile. */
+    private double stillProjectedEnergy, inertialProjectedEnergy, endProjectedEnergy;
+    private final double[] keptPositions;
+
+    /**
+     * ½ Σ C²/α over the projected blocks' compliant rows (a shear, a dihedral: XPBD's energy, which these
+     * blocks hold by projection) at the particles' positions, on one thread in block order.
+     */
+    private double projectedEnergy() {
+        double sum = 0;
+        for (ConstraintBlock b : projectedBlocks)
+            for (int i = 0, count = b.count(); i < count; i++) {
+                final double alpha = b.compliance(i);
+                if (!(alpha > 0)) continue;
+                final double c = b.evaluate(i, particles);
+                sum += c * c / alpha;
+            }
+        return 0.5 * sum;
+    }
+
+    /** The projected blocks' energy at the still start: the blocks read the particles, so the start is put there for it. */
+    private double projectedEnergyAtStill() {
+        final double[] x = particles.x;
+        placeStill(0, 1);
+        System.arraycopy(x, 0, keptPositions, 0, 3 * n);
+        System.arraycopy(stillStart, 0, x, 0, 3 * n);
+        double energy = projectedEnergy();
+        System.arraycopy(keptPositions, 0, x, 0, 3 * n);
+        return energy;
+    }
+
+    /**
+     * Takes out of the substep's new velocity what the iterations added to the energy. Implicit Euler's
+     * solution x' of min G, with v' = (x' − x_prev)/h, has ½|v'|²_M + E(x') ≤ ½|ṽ|²_M + E(x_prev) − ½|v' − ṽ|²_M
+     * for a convex energy (from ∇G(x') = 0; likewise at a contact with a still solid, where x_prev is
+     * admissible), where ṽ = v + h a is the velocity after the external forces and the right side is G(x_prev):
+     * the step dissipates (E here includes the projected blocks' compliant rows). A few sweeps stop short of x', and on a cloth much stiffer than its inertia the
+     * error they leave, which they shrink in G's norm, can grow in the masses' norm: as velocity. Compounded
+     * over the steps, a strongly anisotropic membrane (E2/E1 = 4e7) ran away (docs/robustness.md). So where
+     * the left side exceeds G(x_prev), the free particles' velocities are scaled to meet it (positions are
+     * kept; the velocity update reads x − x_prev, so x_prev moves), as Dinev, Liu and Kavan 2018, "Stabilizing
+     * Integrators for Real-Time Physics", bound an integrator's energy. Not where the bound does not hold for
+     * the exact step either ({@link #boundHolds}).
+     */
+    private void withoutEnergyGain() {
+        if (!bounded) return;
+        double budget = 0, end = 0, kinetic = 0;
+        for (int c = 0; c < CHUNKS; c++) { budget += stillEnergy[c]; end += endEnergy[c]; kinetic += endInertia[c]; }
+        if (restHasEnergy) {
+            endProjectedEnergy = projectedEnergy();
+            budget += stillProjectedEnergy;
+            end += endProjectedEnergy;
+        }
+        if (end <= budget || kinetic == 0) return;
+        wary = WARY;
+        final double[] x = particles.x, prev = particles.prev, w = particles.w;
+        if (end - kinetic > budget && !choosing) {
+            // The inertial start, not chosen against the still one, left more energy in the cloth than staying
+            // put has: no speed can pay for that, so the substep is undone (the cloth rests where it began) and
+            // the next ones choose their start.
+            for (int v = 0; v < n; v++) {
+                if (w[v] == 0) continue;
+                for (int k = 3 * v; k < 3 * v + 3; k++) { x[k] = stillStart[k]; prev[k] = stillStart[k]; }
+            }
+            endMaterialSummed = false;
             return;
         }
-        listener.afterSweep(sim, substep, -1);
-        for (int it = 0; it < iterations; it++) {
-            for (int c = 0, nc = colours(); c < nc; c++) solveColour(c, 0, 1);
-            rest.sweep(particles, ctx);
-            listener.afterSweep(sim, substep, it);
+        final double scale = Math.sqrt(Math.max(0, budget - (end - kinetic)) / kinetic);
+        for (int v = 0; v < n; v++) {
+            if (w[v] == 0) continue;
+            for (int k = 3 * v; k < 3 * v + 3; k++) prev[k] = x[k] - scale * (x[k] - prev[k]);
         }
+    }
+
+    /**
+     * Whether nothing outside the cloth works on it this substep: no hard attachment (a grab leads its
+     * particle) and no moving collider in contact.
+     */
+    private boolean boundHolds() {
+        for (int i = 0, na = attachments.count(); i < na; i++) if (!(attachments.compliance(i) > 0)) return false;
+        for (int k = 0, nc = contacts.count(); k < nc; k++) if (contacts.with(k).moving()) return false;
+        return true;
+    }
+
+    /**
+     * Share {@code id} of {@code shares} of the still start, where G(x_prev) = ½|ṽ|²_M + E(x_prev) is summed:
+     * the free particles where the substep began, the pinned where they are now (a kinematic pin's work is in
+     * G then). Every share is placed before any energy is summed (the team waits between).
+     */
+    private void placeStill(int id, int shares) {
+        final double[] x = particles.x, w = particles.w, prev = particles.prev, still = stillStart;
+        for (int v = share(n, id, shares), end = share(n, id + 1, shares); v < end; v++) {
+            final double[] from = w[v] != 0 ? prev : x;
+            final int k = 3 * v;
+            still[k] = from[k]; still[k + 1] = from[k + 1]; still[k + 2] = from[k + 2];
+        }
+    }
+
+    /** The first of {@code count} items in share {@code id} of {@code shares}. */
+    private static int share(int count, int id, int shares) { return (int) ((long) count * id / shares); }
+
+    /**
+     * Chunk {@code id} of {@link #CHUNKS} of the step's energy at positions x about a: the free particles'
+     * inertia Σ mᵢ|xᵢ − aᵢ|²/(2h²) (also written to {@code inertiaOut[id]} when given), the material's energy
+     * ({@code material}, from {@link #materialChunk}), the compliant attachments' and the penalties of the
+     * listed pair contacts. Friction dissipates, and solids and the projected blocks are met exactly: they have
+     * no energy here. The chunks sum to the whole.
+     */
+    private double energyChunk(double[] x, double[] about, int id, double material, double[] inertiaOut) {
+        final int shares = CHUNKS;
+        final double[] w = particles.w;
+        final int from = share(n, id, shares), to = share(n, id + 1, shares);
+        double inertial = 0, elastic = 0;
+        for (int v = from; v < to; v++) {
+            if (w[v] == 0) continue;
+            final int k = 3 * v;
+            double dx = x[k] - about[k], dy = x[k + 1] - about[k + 1], dz = x[k + 2] - about[k + 2];
+            inertial += (dx * dx + dy * dy + dz * dz) / w[v];
+        }
+        for (int i = share(attachments.count(), id, shares), end = share(attachments.count(), id + 1, shares); i < end; i++) {
+            final double alpha = attachments.compliance(i);
+            if (!(alpha > 0)) continue;
+            final int kv = 3 * attachments.particle(i, 0);
+            double dx = x[kv] - attachments.target[3 * i], dy = x[kv + 1] - attachments.target[3 * i + 1], dz = x[kv + 2] - attachments.target[3 * i + 2];
+            elastic += (dx * dx + dy * dy + dz * dz) / alpha;
+        }
+        for (int k = share(contacts.count(), id, shares), end = share(contacts.count(), id + 1, shares); k < end; k++) {
+            final Collider with = contacts.with(k);
+            if (!(with instanceof SelfCollision)) continue;
+            final SelfCollision self = (SelfCollision) with;
+            final int a = contacts.particle(k), b = self.other(contacts.entry(k), a);
+            final double wab = w[a] + w[b];
+            if (wab == 0) continue;
+            double dx = x[3 * a] - x[3 * b], dy = x[3 * a + 1] - x[3 * b + 1], dz = x[3 * a + 2] - x[3 * b + 2];
+            double c = Math.sqrt(dx * dx + dy * dy + dz * dz) - self.thickness;
+            if (c < 0) elastic += CONTACT_STIFFNESS * inverseH2 / wab * c * c;
+        }
+        inertial *= 0.5 * inverseH2;
+        if (inertiaOut != null) inertiaOut[id] = inertial;
+        return inertial + 0.5 * elastic + material;
+    }
+
+    /**
+     * Chunk {@code id} of {@link #CHUNKS} of the material's energy at positions x, each term once: the
+     * membranes, the hinges (½ xᵀBx per axis), springs and tethers. Within a step it changes only with x.
+     */
+    private double materialChunk(double[] x, int id) {
+        final int shares = CHUNKS;
+        final double[] w = particles.w;
+        final int from = share(n, id, shares), to = share(n, id + 1, shares);
+        double elastic = 0;
+        for (int t = share(triBlock.length, id, shares), end = share(triBlock.length, id + 1, shares); t < end; t++) {
+            final int a0 = 3 * triParticle[3 * t], a1 = 3 * triParticle[3 * t + 1], a2 = 3 * triParticle[3 * t + 2];
+            final double P = triRest[4 * t], Q = triRest[4 * t + 1], R = triRest[4 * t + 2], S = triRest[4 * t + 3];
+            double e1x = x[a1] - x[a0], e1y = x[a1 + 1] - x[a0 + 1], e1z = x[a1 + 2] - x[a0 + 2];
+            double e2x = x[a2] - x[a0], e2y = x[a2 + 1] - x[a0 + 1], e2z = x[a2 + 2] - x[a0 + 2];
+            double ux = e1x * P + e2x * R, uy = e1y * P + e2y * R, uz = e1z * P + e2z * R;
+            double wx = e1x * Q + e2x * S, wy = e1y * Q + e2y * S, wz = e1z * Q + e2z * S;
+            double euu = 0.5 * (ux * ux + uy * uy + uz * uz - 1), eww = 0.5 * (wx * wx + wy * wy + wz * wz - 1);
+            double uw = ux * wx + uy * wy + uz * wz;
+            elastic += triK[4 * t] * euu * euu + 2 * triK[4 * t + 1] * euu * eww + triK[4 * t + 2] * eww * eww + triK[4 * t + 3] * uw * uw;
+        }
+        for (int v = from; v < to; v++) {
+            final int kv = 3 * v, d = bendDiagonal[v];
+            // B is symmetric and a row's columns are sorted: its diagonal once, the columns past it twice.
+            if (d >= 0) {
+                double bx = 0, by = 0, bz = 0;
+                for (int e = d + 1, end = bendStart[v + 1]; e < end; e++) {
+                    final int u = 3 * bendColumn[e], b3 = 3 * e;
+                    bx += bendValue[b3] * x[u]; by += bendValue[b3 + 1] * x[u + 1]; bz += bendValue[b3 + 2] * x[u + 2];
+                }
+                final int d3 = 3 * d;
+                elastic += x[kv] * (2 * bx + bendValue[d3] * x[kv]) + x[kv + 1] * (2 * by + bendValue[d3 + 1] * x[kv + 1])
+                        + x[kv + 2] * (2 * bz + bendValue[d3 + 2] * x[kv + 2]);
+            }
+            if (w[v] == 0) continue;
+            for (int e = tetherStart[v], end = tetherStart[v + 1]; e < end; e++) {
+                final int ka = 3 * tetherAnchor[tetherOf[e]];
+                double dx = x[kv] - x[ka], dy = x[kv + 1] - x[ka + 1], dz = x[kv + 2] - x[ka + 2];
+                double c = Math.sqrt(dx * dx + dy * dy + dz * dz) - tetherDistance[tetherOf[e]];
+                if (c > 0) elastic += HARD_STIFFNESS * inverseH2 / w[v] * c * c;
+            }
+        }
+        for (int s = share(springStiffness.length, id, shares), end = share(springStiffness.length, id + 1, shares); s < end; s++) {
+            final int a = 3 * springParticle[2 * s], b = 3 * springParticle[2 * s + 1];
+            double dx = x[a] - x[b], dy = x[a + 1] - x[b + 1], dz = x[a + 2] - x[b + 2];
+            double c = Math.sqrt(dx * dx + dy * dy + dz * dz) - springRest[s];
+            elastic += springStiffness[s] * c * c;
+        }
+        return 0.5 * elastic;
     }
 
     /** A substep's iterations on the team: each colour split into shares, the projected blocks on the caller. */
     @Override public void work(int id, Team t) {
         final int threads = t.threads(), colours = colours();
-        final double[] x = particles.x;
+        if (bounded) budgetAndStart(id, threads);
         for (int it = 0; it < iterations; it++) {
             for (int c = 0; c < colours; c++) {
                 solveColour(c, id, threads);
@@ -458,6 +750,10 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
             }
             if (id == 0) rest.sweep(particles, ctx);
             t.await();
+        }
+        if (bounded) {
+            sumEndEnergy(id, threads);
+            t.await(); // the caller sums every chunk when its own share returns
         }
     }
 
@@ -627,7 +923,8 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
     @Override public SolveStage probed(StepProbe probe) {
         return new SolveStage() {
             @Override public void solve(int substep, int iterations) {
-                VertexBlockDescent.this.solve(substep, 0);
+                begin(substep);
+                if (bounded) budgetAndStart(0, 1);
                 for (int it = 0; it < iterations; it++) {
                     for (int k = 0; k < n; k++) {
                         solveParticle(order[k], inverseH2);
@@ -639,6 +936,8 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
                         probe.check(contacts.particle(k), ConstraintFamily.COLLISION);
                     }
                 }
+                if (bounded) sumEndEnergy(0, 1);
+                withoutEnergyGain();
             }
 
             @Override public SolveStage probed(StepProbe p) { return this; }
