@@ -30,8 +30,9 @@ import xpbdcloth.mesh.ClothMesh;
 
 /**
  * Seeded random simulations: sizes, pins, families, k, α, iterations, substeps, dt, damping, masses from
- * 1e-6 to 1e3 kg, fast and spinning spheres, wind, two threads, grabbed particles, switches of mode and
- * solver, and in one case of ten an illegal parameter.
+ * 1e-6 to 1e3 kg, fast and spinning spheres, boxes and capsules, wind, two threads, grabbed particles,
+ * switches of mode and solver, and in one case of ten an illegal parameter; on top, each in one case of
+ * four, a measured-fabric membrane and bending, aerodynamics, self-collision and a floor ({@link #addExtras}).
  * Every case must end with finite positions, or, for the illegal one, with an IllegalArgumentException
  * that names the parameter and its value. A failing case prints its seed; {@code --seed} replays it.
  */
@@ -239,9 +240,89 @@ public final class Fuzz implements Callable<Integer> {
         if (r.nextInt(4) == 0)
             sim.add(new Wind(cloth.triangles(), 20 * r.nextGaussian(), 5 * r.nextGaussian(), 20 * r.nextGaussian(), 10 * r.nextDouble(), r.nextDouble()));
         if (r.nextInt(10) == 0) s.threads(2);
+        if (illegal == null) addExtras(new Random(extrasSeed(r)), cloth, sim);
         if (illegal != null && illegal[0].equals("radius") && spheres == 0) new Sphere(SpherePath.fixed(0, 0, 0), 0, 0, 0, 0);
         if (illegal != null && illegal[0].equals("staticFriction") && spheres == 0) new Sphere(SpherePath.fixed(0, 0, 0), 1, 0, -0.5, 0);
         return sim;
+    }
+
+    /**
+     * The seed of a case's later features, drawn once from the case's stream so that the draws above stay
+     * what they were for every seed (a failing seed from before still replays its cloth, solver and colliders).
+     */
+    private static long extrasSeed(Random r) { return r.nextLong(); }
+
+    /**
+     * What the engine has beyond springs and solids, each in one case of four: a measured-fabric membrane
+     * with its bending (on a cloth with triangles), aerodynamic drag and lift, self-collision, and a fixed
+     * plane (a floor, tilted); the ranges are the presets' ({@link xpbdcloth.scene.Limits}).
+     */
+    static void addExtras(Random r, Cloth cloth, Simulation sim) {
+        int[] triangles = cloth.triangles();
+        boolean area = triangles != null && triangles.length > 0 && hasArea(cloth.particles(), triangles);
+        if (area && r.nextInt(4) == 0) {
+            double e1 = logUniform(r, 1e-1, 1e7), e2 = logUniform(r, 1e-1, 1e7);
+            // |ν12| < √(E1/E2) for a positive-definite stiffness.
+            double nu = (2 * r.nextDouble() - 1) * 0.9 * Math.min(0.99, Math.sqrt(e1 / e2));
+            xpbdcloth.engine.OrthotropicMaterial membrane = new xpbdcloth.engine.OrthotropicMaterial(e1, e2, nu, logUniform(r, 1e-1, 1e7));
+            double angle = 2 * Math.PI * r.nextDouble();
+            double[] warp = cloth.particles().count() > 0 ? inPlane(cloth.particles(), triangles, angle) : new double[] {1, 0, 0};
+            for (xpbdcloth.engine.ConstraintBlock b : xpbdcloth.fabric.FabricConstraints.build(cloth.particles(), triangles, warp, membrane,
+                    logUniform(r, 1e-6, 1), r.nextBoolean()))
+                sim.add(b);
+        }
+        if (area && r.nextInt(4) == 0)
+            sim.add(new xpbdcloth.engine.Aerodynamics(triangles, logUniform(r, 1e-3, 1e3), 10 * r.nextDouble(), 10 * r.nextDouble())
+                    .air(30 * r.nextGaussian(), 10 * r.nextGaussian(), 30 * r.nextGaussian()));
+        if (r.nextInt(4) == 0) {
+            double edge = shortestEdge(cloth);
+            // At most the shortest edge, as the loader demands, and in the presets' range (a line of particles has no face to measure).
+            double most = Math.min(edge, 1);
+            if (most >= 1e-4) sim.selfCollision(new xpbdcloth.engine.SelfCollision(cloth.mesh().positions(),
+                    Math.max(1e-4, most * r.nextDouble()), 2 * r.nextDouble(), 2 * r.nextDouble()));
+        }
+        if (r.nextInt(4) == 0)
+            sim.add(new xpbdcloth.engine.Plane(new double[] {0, 2 * r.nextDouble() - 0.5, 0},
+                    new double[] {0.3 * r.nextGaussian(), 1, 0.3 * r.nextGaussian()}, 0.01 * r.nextDouble(), 2 * r.nextDouble(), 2 * r.nextDouble()));
+    }
+
+    /** Whether any triangle has area (a grid of zero width or height has none, and a fabric needs some). */
+    private static boolean hasArea(Particles p, int[] t) {
+        for (int k = 0; k < t.length; k += 3) if (triangleArea(p, t[k], t[k + 1], t[k + 2]) > 1e-12) return true;
+        return false;
+    }
+
+    private static double triangleArea(Particles p, int a, int b, int c) {
+        double ux = p.x(b) - p.x(a), uy = p.y(b) - p.y(a), uz = p.z(b) - p.z(a);
+        double vx = p.x(c) - p.x(a), vy = p.y(c) - p.y(a), vz = p.z(c) - p.z(a);
+        double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+        return 0.5 * Math.sqrt(nx * nx + ny * ny + nz * nz);
+    }
+
+    /** A warp at {@code angle} in the plane of the cloth's first triangle with area. */
+    private static double[] inPlane(Particles p, int[] t, double angle) {
+        for (int k = 0; k < t.length; k += 3) {
+            if (triangleArea(p, t[k], t[k + 1], t[k + 2]) <= 1e-12) continue;
+            int a = t[k], b = t[k + 1], c = t[k + 2];
+            double[] u = {p.x(b) - p.x(a), p.y(b) - p.y(a), p.z(b) - p.z(a)}, v = {p.x(c) - p.x(a), p.y(c) - p.y(a), p.z(c) - p.z(a)};
+            double[] n = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+            double[] w = {n[1] * u[2] - n[2] * u[1], n[2] * u[0] - n[0] * u[2], n[0] * u[1] - n[1] * u[0]};
+            double lu = Math.sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]), lw = Math.sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+            double cs = Math.cos(angle) / lu, sn = Math.sin(angle) / lw;
+            return new double[] {cs * u[0] + sn * w[0], cs * u[1] + sn * w[1], cs * u[2] + sn * w[2]};
+        }
+        return new double[] {1, 0, 0};
+    }
+
+    /** The cloth's shortest edge at rest, which a self-collision's thickness may not exceed. */
+    private static double shortestEdge(Cloth cloth) {
+        ClothMesh m = cloth.mesh();
+        double shortest = Double.MAX_VALUE;
+        for (int k = 0; k < m.faceCount(); k++) {
+            int[] face = m.face(k);
+            for (int j = 0; j < face.length; j++) shortest = Math.min(shortest, m.distance(face[j], face[(j + 1) % face.length]));
+        }
+        return shortest;
     }
 
     /** The mesh's triangles as its faces: a grid's quads become a triangle mesh of the same vertices. */
@@ -258,7 +339,7 @@ public final class Fuzz implements Callable<Integer> {
     @Option(names = "--seed", description = "first seed (replay a failing case with --seed S --cases 1)", defaultValue = "1")
     long seed;
 
-    @Option(names = "--solver", description = "all (every case once per solver) or one of gauss-seidel, jacobi-pcg, multigrid-pcg", defaultValue = "all")
+    @Option(names = "--solver", description = "all (every case once per solver) or one of gauss-seidel, jacobi-pcg, multigrid-pcg, vertex-block-descent", defaultValue = "all")
     String solver;
 
     @Option(names = "--presets", description = "random preset files to load and step (0 to 10 000 000)", defaultValue = "300")
@@ -276,7 +357,7 @@ public final class Fuzz implements Callable<Integer> {
         if (seed > Long.MAX_VALUE - cases) throw new IllegalArgumentException("seed must be <= " + (Long.MAX_VALUE - cases) + " so that seed + cases does not overflow, was " + seed);
         List<SolverType> solvers = new ArrayList<>();
         for (SolverType t : SolverType.values()) if (solver.equals("all") || solver.equals(t.label())) solvers.add(t);
-        if (solvers.isEmpty()) throw new IllegalArgumentException("solver must be all, gauss-seidel, jacobi-pcg or multigrid-pcg, was " + solver);
+        if (solvers.isEmpty()) throw new IllegalArgumentException("solver must be all, gauss-seidel, jacobi-pcg, multigrid-pcg or vertex-block-descent, was " + solver);
         int failed = 0;
         long ran = 0;
         for (SolverType t : solvers) {

@@ -42,18 +42,34 @@ class RobustnessCommandsTest {
     }
 
     /** Random presets with every field drawn across its documented range, edges included. */
-    /** The engine fuzzer adds wind and runs two threads too (it used to do neither). */
+    /**
+     * The engine fuzzer adds wind and runs two threads (it used to do neither), and draws what the engine
+     * has beyond springs and solids, each in about one case of four: a fabric membrane, aerodynamics,
+     * self-collision and a floor (it drew none of them before the hostile-input report).
+     */
     @Test
-    void theFuzzerDrawsWindAndThreads() {
-        int wind = 0, threads = 0;
-        for (long seed = 0; seed < 100; seed++) {
+    void theFuzzerDrawsWindThreadsAndEveryEngineFeature() {
+        int wind = 0, threads = 0, aerodynamics = 0, fabric = 0, self = 0, floor = 0, cases = 200;
+        for (long seed = 0; seed < cases; seed++) {
             xpbdcloth.engine.Simulation sim = Fuzz.build(new java.util.Random(seed), null, SolverType.GAUSS_SEIDEL);
-            if (!sim.forces().isEmpty()) wind++;
+            for (xpbdcloth.engine.ExternalForce f : sim.forces()) {
+                if (f instanceof xpbdcloth.engine.Wind) wind++;
+                if (f instanceof xpbdcloth.engine.Aerodynamics) aerodynamics++;
+            }
             if (sim.settings().threads() > 1) threads++;
+            for (xpbdcloth.engine.Constraint c : sim.constraints())
+                if (c.family() == xpbdcloth.engine.ConstraintFamily.MEMBRANE) { fabric++; break; }
+            if (sim.selfCollision() != null) self++;
+            if (!sim.planes().isEmpty()) floor++;
             sim.close();
         }
-        assertTrue(wind >= 10 && wind <= 45, "wind in about one case of four: " + wind);
-        assertTrue(threads >= 3 && threads <= 20, "two threads in about one case of ten: " + threads);
+        assertTrue(wind >= 20 && wind <= 90, "wind in about one case of four: " + wind);
+        assertTrue(threads >= 6 && threads <= 40, "two threads in about one case of ten: " + threads);
+        // A fabric and aerodynamics need a cloth with area (not a rope or a line of particles): fewer than one in four.
+        assertTrue(fabric >= 15 && fabric <= 60, "a fabric in about one case of four with area: " + fabric);
+        assertTrue(aerodynamics >= 15 && aerodynamics <= 60, "aerodynamics in about one case of four with area: " + aerodynamics);
+        assertTrue(self >= 20 && self <= 80, "self-collision in about one case of four: " + self);
+        assertTrue(floor >= 30 && floor <= 70, "a floor in about one case of four: " + floor);
     }
 
     static int structural(xpbdcloth.engine.Simulation sim) {
