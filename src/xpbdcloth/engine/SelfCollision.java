@@ -27,8 +27,8 @@ import java.util.Arrays;
  * prediction, for fast ones), and while no particle has drifted, with its motion this substep, more than
  * s/2 from where the build saw it, no pair outside the list can come within t: the list is used again
  * and the hash is not rebuilt. A cloth at rest or sliding slowly rebuilds rarely; one falling fast, every
- * substep. Cells are R wide: a fast particle searches the cells its own reach spans (each pair is found
- * by the faster of its two), so one fast particle no longer widens every cell. The arrays grow only when
+ * substep. Cells are 2R wide: a particle searches the cells its own reach spans (each pair is found by
+ * the faster of its two), so one fast particle no longer widens every cell. The arrays grow only when
  * the cloth needs more (more pairs than ever before), so steady stepping allocates nothing.
  * Where it fails: a particle passing through the middle of a triangle between three others far apart
  * (the cloth's spacing larger than t) is not caught: this is particle–particle, not point–triangle.
@@ -42,7 +42,7 @@ public final class SelfCollision extends Collider implements Team.Job {
     private int[] cellStart = new int[0], sorted = new int[0], cellOf = new int[0];
     // The positions in the hash's order (candidates in a bucket are read one after another) and each
     // particle's reach (its motion in the prediction).
-    private double[] sortedX = new double[0], reachOf = new double[0];
+    private double[] sortedX = new double[0], sortedReach = new double[0], reachOf = new double[0];
     // The pairs of the last build, and where the build saw each particle.
     private int[] pairI = new int[16], pairJ = new int[16];
     private int pairs;
@@ -137,7 +137,10 @@ public final class SelfCollision extends Collider implements Team.Job {
         listed = true;
         builds++;
         buildBase = thickness * (1 + ContactSet.SLACK) + skin();
-        buildCell = buildBase;
+        // Cells 2R wide: a slow particle's search, R either way, spans two cells on each axis, eight in all
+        // (cells R wide would make it three, 27 buckets of fewer particles: more time in the buckets' own
+        // overhead than the fewer candidates save; ContactBench's self-collision cases).
+        buildCell = 2 * buildBase;
         buildHash(p.x, n, buildCell);
         int threads = team == null ? 1 : team.threads();
         if (finds.length != threads) {
@@ -176,21 +179,24 @@ public final class SelfCollision extends Collider implements Team.Job {
             final int k = 3 * i;
             final double xi = x[k], yi = x[k + 1], zi = x[k + 2], mi = reachOf[i];
             // A pair is found by the faster of the two (by index when equally fast): i searches as far as a
-            // partner as fast as itself could need, base + 2 mᵢ, which spans r cells either way.
-            final double span = Math.ceil((base + 2 * mi) / cell);
-            if ((2 * span + 1) * (2 * span + 1) * (2 * span + 1) > n) {
+            // partner as fast as itself could need, base + 2 mᵢ, over the cells that span on each axis (two or
+            // three at rest, where a span rounded up about i's own cell would make it five, 125 cells in all).
+            final double reach = base + 2 * mi;
+            final int x0 = cellIndex(xi - reach, cell), x1 = cellIndex(xi + reach, cell);
+            final int y0 = cellIndex(yi - reach, cell), y1 = cellIndex(yi + reach, cell);
+            final int z0 = cellIndex(zi - reach, cell), z1 = cellIndex(zi + reach, cell);
+            if (((double) x1 - x0 + 1) * ((double) y1 - y0 + 1) * ((double) z1 - z0 + 1) > n) {
                 // A particle moving many cells in a substep (a fast one on a fine cloth) would search more
                 // cells than there are particles: look at every particle instead (the fuzzer found a 4 × 2
                 // cloth taking minutes a step, searching 1e11 cells).
                 scan(out, i, 0, n, mi, w, neighbours);
                 continue;
             }
-            final int r = (int) span;
-            final int cx = cellIndex(xi, cell), cy = cellIndex(yi, cell), cz = cellIndex(zi, cell);
-            for (int dx = -r; dx <= r; dx++)
-                for (int dy = -r; dy <= r; dy++)
-                    for (int dz = -r; dz <= r; dz++) {
-                        final int bucket = hash(cx + dx, cy + dy, cz + dz, table);
+            // Long counters: a cell index saturated at Integer.MAX_VALUE (a tiny thickness far out) still ends the loop.
+            for (long cx = x0; cx <= x1; cx++)
+                for (long cy = y0; cy <= y1; cy++)
+                    for (long cz = z0; cz <= z1; cz++) {
+                        final int bucket = hash((int) cx, (int) cy, (int) cz, table);
                         // Two of the cells searched can share a bucket: visit it once, or its pairs would be found twice.
                         if (visitedBy[bucket] == i + 1) continue;
                         visitedBy[bucket] = i + 1;
@@ -208,9 +214,10 @@ public final class SelfCollision extends Collider implements Team.Job {
         final int k = 3 * i;
         final double xi = x[k], yi = x[k + 1], zi = x[k + 2], base = buildBase;
         for (int s = from; s < to; s++) {
+            final double mj = sortedReach[s];
+            if (mj > mi) continue;
             final int j = sorted[s];
-            final double mj = reachOf[j];
-            if (j == i || mj > mi || (mj == mi && j < i)) continue;
+            if (j == i || (mj == mi && j < i)) continue;
             final double ex = xi - sx[3 * s], ey = yi - sx[3 * s + 1], ez = zi - sx[3 * s + 2], d2 = ex * ex + ey * ey + ez * ez;
             final double reach = base + mi + mj;
             if (d2 >= reach * reach || w[i] + w[j] == 0) continue;
@@ -243,7 +250,7 @@ public final class SelfCollision extends Collider implements Team.Job {
     /** Counting sort of the particles by hashed cell. */
     private void buildHash(double[] x, int n, double cell) {
         int table = Integer.highestOneBit(Math.max(1, 2 * n - 1)) << 1; // the power of two at or above 2n
-        if (cellStart.length != table + 1) { cellStart = new int[table + 1]; sorted = new int[n]; cellOf = new int[n]; sortedX = new double[3 * n]; }
+        if (cellStart.length != table + 1) { cellStart = new int[table + 1]; sorted = new int[n]; cellOf = new int[n]; sortedX = new double[3 * n]; sortedReach = new double[n]; }
         Arrays.fill(cellStart, 0);
         for (int i = 0; i < n; i++) {
             int k = 3 * i;
@@ -256,6 +263,7 @@ public final class SelfCollision extends Collider implements Team.Job {
         for (int s = 0; s < n; s++) {
             int k = 3 * sorted[s];
             sortedX[3 * s] = x[k]; sortedX[3 * s + 1] = x[k + 1]; sortedX[3 * s + 2] = x[k + 2];
+            sortedReach[s] = reachOf[sorted[s]];
         }
     }
 
