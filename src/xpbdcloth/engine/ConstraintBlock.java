@@ -96,7 +96,14 @@ public abstract class ConstraintBlock {
     /** Marks the material changed (a subclass calls it when it rewrites coefficients of its own). */
     final void materialChanged() { materialVersion++; }
 
-    /** PBD stiffness k ∈ [0, 1] for constraint i alone. */
+    /**
+     * Whether a unit's rows are the components of one vector constraint and so share one material (a
+     * bend's three rows: a compliance per axis would make its energy depend on the frame's orientation).
+     * Then a value given to one row is given to its unit's rows.
+     */
+    boolean rowsShareMaterial() { return false; }
+
+    /** PBD stiffness k ∈ [0, 1] for constraint i alone (for its unit's rows, where they share their material). */
     public final void setStiffness(int i, double k) {
         Check.inRange("stiffness", k, 0, 1);
         if (stiffnessOf == null) {
@@ -104,20 +111,24 @@ public abstract class ConstraintBlock {
             stiffnessOf = filled(stiffness);
             stiffnessPerSweepOf = filled(stiffnessPerSweep);
         }
-        stiffnessOf[i] = k;
+        for (int r = firstRowWith(i), end = lastRowWith(i); r <= end; r++) stiffnessOf[r] = k;
         preparedRevision = -1;
     }
 
-    /** XPBD compliance α ≥ 0 (m/N) for constraint i alone. */
+    /** XPBD compliance α ≥ 0 (m/N) for constraint i alone (for its unit's rows, where they share their material). */
     public final void setCompliance(int i, double alpha) {
         Check.inRange("compliance", alpha, 0, EngineRange.MAX_COMPLIANCE);
         if (complianceOf == null) {
             if (alpha == compliance) return;
             complianceOf = filled(compliance);
         }
-        complianceOf[i] = alpha;
+        for (int r = firstRowWith(i), end = lastRowWith(i); r <= end; r++) complianceOf[r] = alpha;
         materialChanged();
     }
+
+    /** The rows that take row i's material: its unit's (those added so far), or i alone. */
+    private int firstRowWith(int i) { return rowsShareMaterial() ? i - i % rowsPerUnit : i; }
+    private int lastRowWith(int i) { return rowsShareMaterial() ? Math.min(i - i % rowsPerUnit + rowsPerUnit, count) - 1 : i; }
 
     private double[] filled(double value) {
         double[] a = new double[lambda.length];

@@ -53,6 +53,9 @@ public final class QuadraticBendBlock extends ConstraintBlock {
         complianceTimesStiffness = new double[lambda.length / 3];
     }
 
+    /** A unit's three rows are C's components: one compliance for the three. */
+    @Override boolean rowsShareMaterial() { return true; }
+
     /** C = Σ c_k x_k: hinges and patch rows alike. */
     @Override public boolean isLinear() { return true; }
 
@@ -148,7 +151,7 @@ public final class QuadraticBendBlock extends ConstraintBlock {
     /** Bending stiffness B (N·m) of hinge u: sets its rows' compliance. */
     public void setBendingStiffness(int u, double bendingStiffness) {
         Check.inRange("bendingStiffness", bendingStiffness, Double.MIN_NORMAL, 1e6);
-        for (int r = 0; r < 3; r++) setCompliance(3 * u + r, complianceTimesStiffness[u] / bendingStiffness);
+        setCompliance(3 * u, complianceTimesStiffness[u] / bendingStiffness); // and its other two rows
     }
 
     /** |C| of hinge u: 2 sin(θ/2) for a hinge bent by θ from its flat rest. */

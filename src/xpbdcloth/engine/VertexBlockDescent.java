@@ -85,10 +85,12 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
     private final double[] triA, triB;
     /**
      * The hinges' energy is quadratic with constant coefficients, ½ Σ_h k_h |Σ c_k x_k|², so its force on a
-     * particle is linear in the positions: −Σ_u B_vu x_u with B = Σ_h k_h c_h c_hᵀ, per axis (each row of a
-     * hinge has its own k). B's row of v lists the particles v shares a hinge with (itself included):
-     * bendStart[v] .. bendStart[v + 1] into bendColumn and bendValue (x, y, z interleaved). Summed once per
-     * material change, it costs a particle a few dozen products where evaluating its dozen hinges cost some three hundred.
+     * particle is linear in the positions: −Σ_u B_vu x_u with B = Σ_h k_h c_h c_hᵀ, the same on each axis (a
+     * hinge's three rows share their compliance, {@link ConstraintBlock#rowsShareMaterial}). B's row of v lists
+     * the particles v shares a hinge with (itself included): bendStart[v] .. bendStart[v + 1] into bendColumn
+     * and bendValue. Summed once per material change, it costs a particle a few dozen products where
+     * evaluating its dozen hinges cost some three hundred. One value an entry, not one per axis: at 128² the
+     * matrix no longer fits the cache three times over, and the sweep waits on memory.
      */
     private final int[] bendStart, bendColumn, bendEntry, bendDiagonal;
     private final double[] bendValue;
@@ -270,7 +272,7 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
             int at = Arrays.binarySearch(partners[v], v);
             bendDiagonal[v] = at >= 0 ? bendStart[v] + at : -1;
         }
-        bendValue = new double[3 * bendStart[n]];
+        bendValue = new double[bendStart[n]];
         final int slots2 = hingeSlots * hingeSlots;
         bendEntry = new int[slots2 * hingeCount];
         Arrays.fill(bendEntry, -1);
@@ -409,15 +411,14 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
             triK[4 * t + 3] = l22 * l22 * k2;
         }
         Arrays.fill(bendValue, 0);
-        for (int h = 0; h < hingeBlock.length; h++)
-            for (int axis = 0; axis < 3; axis++) {
-                double k = 1 / hingeBlock[h].compliance(3 * hingeUnit[h] + axis);
-                for (int a = 0; a < hingeSlots; a++)
-                    for (int b = 0; b < hingeSlots; b++) {
-                        int entry = bendEntry[hingeSlots * hingeSlots * h + hingeSlots * a + b];
-                        if (entry >= 0) bendValue[3 * entry + axis] += k * hingeCoefficient[hingeSlots * h + a] * hingeCoefficient[hingeSlots * h + b];
-                    }
-            }
+        for (int h = 0; h < hingeBlock.length; h++) {
+            double k = 1 / hingeBlock[h].compliance(3 * hingeUnit[h]);
+            for (int a = 0; a < hingeSlots; a++)
+                for (int b = 0; b < hingeSlots; b++) {
+                    int entry = bendEntry[hingeSlots * hingeSlots * h + hingeSlots * a + b];
+                    if (entry >= 0) bendValue[entry] += k * hingeCoefficient[hingeSlots * h + a] * hingeCoefficient[hingeSlots * h + b];
+                }
+        }
         for (int s = 0; s < springBlock.length; s++) springStiffness[s] = 1 / springBlock[s].compliance(springRow[s]);
         restHasEnergy = false;
         for (ConstraintBlock b : projectedBlocks)
@@ -715,12 +716,12 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
             if (d >= 0) {
                 double bx = 0, by = 0, bz = 0;
                 for (int e = d + 1, end = bendStart[v + 1]; e < end; e++) {
-                    final int u = 3 * bendColumn[e], b3 = 3 * e;
-                    bx += bendValue[b3] * x[u]; by += bendValue[b3 + 1] * x[u + 1]; bz += bendValue[b3 + 2] * x[u + 2];
+                    final int u = 3 * bendColumn[e];
+                    final double b = bendValue[e];
+                    bx += b * x[u]; by += b * x[u + 1]; bz += b * x[u + 2];
                 }
-                final int d3 = 3 * d;
-                elastic += x[kv] * (2 * bx + bendValue[d3] * x[kv]) + x[kv + 1] * (2 * by + bendValue[d3 + 1] * x[kv + 1])
-                        + x[kv + 2] * (2 * bz + bendValue[d3 + 2] * x[kv + 2]);
+                final double bd = bendValue[d];
+                elastic += x[kv] * (2 * bx + bd * x[kv]) + x[kv + 1] * (2 * by + bd * x[kv + 1]) + x[kv + 2] * (2 * bz + bd * x[kv + 2]);
             }
             if (w[v] == 0) continue;
             for (int e = tetherStart[v], end = tetherStart[v + 1]; e < end; e++) {
@@ -809,17 +810,19 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
             int e = bendStart[v];
             final int end = bendStart[v + 1];
             for (; e + 1 < end; e += 2) {
-                final int u = 3 * bendColumn[e], b3 = 3 * e, u2 = 3 * bendColumn[e + 1];
-                fx -= bendValue[b3] * x[u]; fy -= bendValue[b3 + 1] * x[u + 1]; fz -= bendValue[b3 + 2] * x[u + 2];
-                gx -= bendValue[b3 + 3] * x[u2]; gy -= bendValue[b3 + 4] * x[u2 + 1]; gz -= bendValue[b3 + 5] * x[u2 + 2];
+                final int u = 3 * bendColumn[e], u2 = 3 * bendColumn[e + 1];
+                final double b = bendValue[e], b2 = bendValue[e + 1];
+                fx -= b * x[u]; fy -= b * x[u + 1]; fz -= b * x[u + 2];
+                gx -= b2 * x[u2]; gy -= b2 * x[u2 + 1]; gz -= b2 * x[u2 + 2];
             }
             if (e < end) {
-                final int u = 3 * bendColumn[e], b3 = 3 * e;
-                fx -= bendValue[b3] * x[u]; fy -= bendValue[b3 + 1] * x[u + 1]; fz -= bendValue[b3 + 2] * x[u + 2];
+                final int u = 3 * bendColumn[e];
+                final double b = bendValue[e];
+                fx -= b * x[u]; fy -= b * x[u + 1]; fz -= b * x[u + 2];
             }
             fx += gx; fy += gy; fz += gz;
-            final int d = 3 * bendDiagonal[v];
-            if (d >= 0) { h00 += bendValue[d]; h11 += bendValue[d + 1]; h22 += bendValue[d + 2]; }
+            final int d = bendDiagonal[v];
+            if (d >= 0) { final double bd = bendValue[d]; h00 += bd; h11 += bd; h22 += bd; }
         }
 
         // Springs: U = ½ k (|d| − L)², d = x_v − x_other; H = k (n nᵀ + [C/|d|]₊ (I − n nᵀ)).

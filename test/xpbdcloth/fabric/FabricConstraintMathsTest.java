@@ -137,6 +137,31 @@ class FabricConstraintMathsTest {
     }
 
     @Test
+    void aBendsThreeRowsShareOneComplianceSoItsEnergyDoesNotDependOnTheFrame() {
+        Cloth cloth = sheet(9, 0.3);
+        Particles p = cloth.particles();
+        QuadraticBendBlock quadratic = (QuadraticBendBlock) FabricConstraints.hinges(p, cloth.triangles(), 2e-5).get(0);
+        // Half the units stiffer, set through their y row alone (as a Constraint view would).
+        for (int u = 0; u < quadratic.hingeCount(); u += 2) quadratic.setCompliance(3 * u + 1, 0.25 * quadratic.compliance(3 * u + 1));
+        for (int u = 0; u < quadratic.hingeCount(); u++)
+            for (int r = 0; r < 3; r++) assertEquals(quadratic.compliance(3 * u + 1), quadratic.compliance(3 * u + r), 0, "row " + r + " of unit " + u);
+        moveAll(p, q -> new double[] {0.5 * Math.sin(q[0] / 0.5), q[1], q[2] + 0.5 * (1 - Math.cos(q[0] / 0.5))});
+        double bent = energy(quadratic, p);
+        // A rotation by 70° about (2, -1, 1): a compliance per axis would weigh the rotated components differently.
+        double[] axis = {2 / Math.sqrt(6), -1 / Math.sqrt(6), 1 / Math.sqrt(6)};
+        double c = Math.cos(1.22), s = Math.sin(1.22);
+        moveAll(p, q -> {
+            double d = axis[0] * q[0] + axis[1] * q[1] + axis[2] * q[2];
+            double[] cross = {axis[1] * q[2] - axis[2] * q[1], axis[2] * q[0] - axis[0] * q[2], axis[0] * q[1] - axis[1] * q[0]};
+            double[] out = new double[3];
+            for (int k = 0; k < 3; k++) out[k] = q[k] * c + cross[k] * s + axis[k] * d * (1 - c);
+            return out;
+        });
+        assertTrue(bent > 0, "the cylinder stores bending energy");
+        assertEquals(bent, energy(quadratic, p), 1e-10 * bent, "bending energy after rotating the bent sheet");
+    }
+
+    @Test
     void badMaterialsAndShapesAreRefusedByName() {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new OrthotropicMaterial(100, 400, 0.6, 10));
         assertTrue(e.getMessage().contains("poisson") && e.getMessage().contains("0.6"), e.getMessage());
