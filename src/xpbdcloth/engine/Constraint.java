@@ -34,8 +34,8 @@ public abstract class Constraint {
      * far, in the context's mode (compliance α for XPBD, k' for PBD). 0 when nothing can move (all
      * particles pinned and α = 0). The one place where the two formulations differ.
      */
-    static double deltaLambda(double C, double wGradSq, double lambda, double compliance, double stiffnessPerSweep, SolverContext ctx) {
-        if (ctx.mode == ConstraintMode.XPBD) {
+    static double deltaLambda(double C, double wGradSq, double lambda, double compliance, double stiffnessPerSweep, ConstraintMode mode, SolverContext ctx) {
+        if (mode == ConstraintMode.XPBD) {
             double alphaTilde = compliance * ctx.inverseH2;
             double denominator = wGradSq + alphaTilde;
             if (denominator <= 0) return 0;

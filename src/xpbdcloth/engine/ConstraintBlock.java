@@ -207,8 +207,19 @@ public abstract class ConstraintBlock {
         count--;
     }
 
+    /**
+     * Whether the block's compliance comes from a measured modulus (a fabric's membrane and bending): then
+     * it is solved with it in either mode. PBD's k is a fraction of the error one projection removes, with no
+     * unit to take a modulus, and a fabric given k = 1 instead is a rigid plate whose hard membrane and
+     * bending fight each other: a 6 × 6 denim in PBD mode reached 1e4 m/s in 2 s (docs/robustness.md).
+     */
+    boolean compliantInAnyMode() { return false; }
+
+    /** The mode this block is solved in: the context's, or XPBD for a {@link #compliantInAnyMode} block. */
+    final ConstraintMode mode(SolverContext ctx) { return compliantInAnyMode() ? ConstraintMode.XPBD : ctx.mode; }
+
     /** Whether a sweep may take this block in XPBD with one compliance for all (no per-constraint values). */
-    final boolean uniformXpbd(SolverContext ctx) { return ctx.mode == ConstraintMode.XPBD && complianceOf == null; }
+    final boolean uniformXpbd(SolverContext ctx) { return mode(ctx) == ConstraintMode.XPBD && complianceOf == null; }
 
     /** Once per substep before the sweeps: λ = 0, and k' refreshed if n, k or the correction changed. */
     final void beginSubstep(SolverContext ctx) {
@@ -228,7 +239,7 @@ public abstract class ConstraintBlock {
     final double deltaLambda(int i, double C, double wGradSq, SolverContext ctx) {
         double dLambda = Constraint.deltaLambda(C, wGradSq, lambda[i],
                 complianceOf == null ? compliance : complianceOf[i],
-                stiffnessPerSweepOf == null ? stiffnessPerSweep : stiffnessPerSweepOf[i], ctx);
+                stiffnessPerSweepOf == null ? stiffnessPerSweep : stiffnessPerSweepOf[i], mode(ctx), ctx);
         lambda[i] += dLambda;
         return dLambda;
     }

@@ -136,6 +136,9 @@ public final class DihedralBlock extends ConstraintBlock {
     /** The gradient's scratch space, one per thread (the parallel sweeps project one block from several threads). */
     private final ThreadLocal<double[]> scratch = ThreadLocal.withInitial(() -> new double[12]);
 
+    /** Solved with its compliance in PBD mode too: α comes from the bending stiffness B. */
+    @Override boolean compliantInAnyMode() { return true; }
+
     @Override void project(int i, Particles p, SolverContext ctx) {
         project(i, p, ctx, scratch.get());
     }

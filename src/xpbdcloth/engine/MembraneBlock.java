@@ -220,6 +220,9 @@ public final class MembraneBlock extends ConstraintBlock {
      * </pre>
      * A is solved by LDLᵀ; a row whose pivot vanishes (nothing can move it) takes Δλ = 0.
      */
+    /** Solved with its compliance in PBD mode too: its rows' compliances are the fabric's moduli. */
+    @Override boolean compliantInAnyMode() { return true; }
+
     @Override void project(int t, Particles p, SolverContext ctx) {
         final double[] x = p.x, w = p.w;
         final int i = 3 * t;
@@ -249,7 +252,7 @@ public final class MembraneBlock extends ConstraintBlock {
         double A12 = l11 * l22 * (wab * vv + wbb * uv);
         double A22 = l22 * l22 * (waa * vv + 2 * wab * uv + wbb * uu);
         double r0, r1, r2;
-        if (ctx.mode == ConstraintMode.XPBD) {
+        if (mode(ctx) == ConstraintMode.XPBD) {
             double t0 = compliance(i) * ctx.inverseH2, t1 = compliance(i + 1) * ctx.inverseH2, t2 = compliance(i + 2) * ctx.inverseH2;
             A00 += t0; A11 += t1; A22 += t2;
             r0 = -C0 - t0 * lambda[i]; r1 = -C1 - t1 * lambda[i + 1]; r2 = -C2 - t2 * lambda[i + 2];

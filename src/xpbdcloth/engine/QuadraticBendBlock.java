@@ -177,6 +177,9 @@ public final class QuadraticBendBlock extends ConstraintBlock {
         for (int k = 0; k < n; k++) out[3 * k + a] += coefficient[n * u + k];
     }
 
+    /** Solved with its compliance in PBD mode too: α comes from the bending stiffness B. */
+    @Override boolean compliantInAnyMode() { return true; }
+
     @Override void project(int u, Particles p, SolverContext ctx) {
         if (!patch) projectHinge(u, p, ctx);
         else projectPatchRow(u, p, ctx);

@@ -38,7 +38,7 @@ public final class KeyBindings {
 
     private static List<KeyBinding> build() {
         List<KeyBinding> b = new ArrayList<>();
-        b.add(new KeyBinding('m', "PBD <-> XPBD for the running scene (no reset)", SketchState::toggleMode, SketchState::mode));
+        b.add(new KeyBinding('m', "PBD <-> XPBD for the running scene (no reset; a fabric keeps its compliances)", SketchState::toggleMode, SketchState::mode));
         b.add(new KeyBinding('c', "Müller's k' correction on/off (PBD)", SketchState::toggleMuller, SketchState::mullerCorrection));
         b.add(new KeyBinding('v', "solver: Gauss-Seidel, Jacobi-PCG, multigrid-PCG, vertex block descent", SketchState::cycleSolver, SketchState::solverType));
         b.add(new KeyBinding('i', "iterations +1", s -> s.changeIterations(1), SketchState::iterations));
