@@ -209,6 +209,9 @@ public final class MembraneBlock extends ConstraintBlock {
         }
     }
 
+    /** Solved with its compliance in PBD mode too: its rows' compliances are the fabric's moduli. */
+    @Override boolean compliantInAnyMode() { return true; }
+
     /**
      * One projection of triangle t: its three rows solved together (Macklin et al. 2016, eq. 11 for one
      * triangle; Gauss–Seidel over triangles), so a triangle's rows no longer undo each other in turn and
@@ -216,13 +219,10 @@ public final class MembraneBlock extends ConstraintBlock {
      * <pre>
      *   g_{r,v} = a_v gu_r + b_v gv_r     (a, b) = (−P−R, −Q−S), (P, Q), (R, S) for x₀, x₁, x₂
      *   A_rs = Σ_v w_v g_{r,v}·g_{s,v} = W_aa gu_r·gu_s + W_ab (gu_r·gv_s + gv_r·gu_s) + W_bb gv_r·gv_s   (+ α̃_r on the diagonal)
-     *   A Δλ = −C − α̃λ (XPBD) or −k'C (PBD),   Δx_v = w_v (a_v Σ_r Δλ_r gu_r + b_v Σ_r Δλ_r gv_r)
+     *   A Δλ = −C − α̃λ (in either mode: {@link #compliantInAnyMode}),   Δx_v = w_v (a_v Σ_r Δλ_r gu_r + b_v Σ_r Δλ_r gv_r)
      * </pre>
      * A is solved by LDLᵀ; a row whose pivot vanishes (nothing can move it) takes Δλ = 0.
      */
-    /** Solved with its compliance in PBD mode too: its rows' compliances are the fabric's moduli. */
-    @Override boolean compliantInAnyMode() { return true; }
-
     @Override void project(int t, Particles p, SolverContext ctx) {
         final double[] x = p.x, w = p.w;
         final int i = 3 * t;
@@ -251,14 +251,9 @@ public final class MembraneBlock extends ConstraintBlock {
         double A11 = wbb * l11 * l11 * vv;
         double A12 = l11 * l22 * (wab * vv + wbb * uv);
         double A22 = l22 * l22 * (waa * vv + 2 * wab * uv + wbb * uu);
-        double r0, r1, r2;
-        if (mode(ctx) == ConstraintMode.XPBD) {
-            double t0 = compliance(i) * ctx.inverseH2, t1 = compliance(i + 1) * ctx.inverseH2, t2 = compliance(i + 2) * ctx.inverseH2;
-            A00 += t0; A11 += t1; A22 += t2;
-            r0 = -C0 - t0 * lambda[i]; r1 = -C1 - t1 * lambda[i + 1]; r2 = -C2 - t2 * lambda[i + 2];
-        } else {
-            r0 = -stiffnessPerSweep(i) * C0; r1 = -stiffnessPerSweep(i + 1) * C1; r2 = -stiffnessPerSweep(i + 2) * C2;
-        }
+        final double t0 = compliance(i) * ctx.inverseH2, t1 = compliance(i + 1) * ctx.inverseH2, t2 = compliance(i + 2) * ctx.inverseH2;
+        A00 += t0; A11 += t1; A22 += t2;
+        final double r0 = -C0 - t0 * lambda[i], r1 = -C1 - t1 * lambda[i + 1], r2 = -C2 - t2 * lambda[i + 2];
         // LDLᵀ of the 3×3 symmetric A; a pivot at or below round-off of the diagonal drops its row.
         double tiny = 1e-14 * (A00 + A11 + A22);
         if (!(tiny > 0)) return;
