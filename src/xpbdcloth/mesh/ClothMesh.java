@@ -210,6 +210,17 @@ public final class ClothMesh {
     /** Length of segment k (m). */
     public double segmentLength(int k) { return distance(segments[2 * k], segments[2 * k + 1]); }
 
+    /**
+     * The shortest edge between particles at rest (m): a triangle's side or a segment; +∞ for a mesh of
+     * neither. A cloth's thickness against itself may not exceed it, or neighbours would push apart.
+     */
+    public double shortestEdge() {
+        double shortest = Double.POSITIVE_INFINITY;
+        for (int k = 0; k < triangles.length; k++) shortest = Math.min(shortest, distance(triangles[k], triangles[k % 3 == 2 ? k - 2 : k + 1]));
+        for (int k = 0; k < segments.length; k += 2) shortest = Math.min(shortest, distance(segments[k], segments[k + 1]));
+        return shortest;
+    }
+
     /** Distance between vertices a and b (m). */
     public double distance(int a, int b) {
         double dx = positions[3 * b] - positions[3 * a], dy = positions[3 * b + 1] - positions[3 * a + 1], dz = positions[3 * b + 2] - positions[3 * a + 2];

@@ -148,14 +148,7 @@ public final class Preset {
                 double dx = columns > 1 ? width / (columns - 1) : Double.POSITIVE_INFINITY, dy = rows > 1 ? height / (rows - 1) : Double.POSITIVE_INFINITY;
                 return Math.min(dx, dy);
             }
-            double[] x = mesh.positions();
-            int[] t = mesh.triangles();
-            double shortest = Double.POSITIVE_INFINITY;
-            for (int k = 0; k < t.length; k++) {
-                int a = 3 * t[k], b = 3 * t[k % 3 == 2 ? k - 2 : k + 1];
-                shortest = Math.min(shortest, Math.sqrt((x[a] - x[b]) * (x[a] - x[b]) + (x[a + 1] - x[b + 1]) * (x[a + 1] - x[b + 1]) + (x[a + 2] - x[b + 2]) * (x[a + 2] - x[b + 2])));
-            }
-            return shortest;
+            return mesh.shortestEdge();
         }
 
         /** The particle a pin motion names: (row, col) on a grid. */

@@ -329,7 +329,7 @@ public final class Fuzz implements Callable<Integer> {
             drive = Math.sqrt(ax * ax + ay * ay + az * az);
         }
         if (r.nextInt(4) == 0) {
-            double edge = shortestEdge(cloth);
+            double edge = cloth.mesh().shortestEdge();
             // At most the shortest edge, as the loader demands, and in the presets' range (a line of particles has no face to measure).
             double most = Math.min(edge, 1);
             if (most >= 1e-4) sim.selfCollision(new xpbdcloth.engine.SelfCollision(cloth.mesh().positions(),
@@ -369,17 +369,6 @@ public final class Fuzz implements Callable<Integer> {
             return new double[] {cs * u[0] + sn * w[0], cs * u[1] + sn * w[1], cs * u[2] + sn * w[2]};
         }
         return new double[] {1, 0, 0};
-    }
-
-    /** The cloth's shortest edge at rest, which a self-collision's thickness may not exceed. */
-    private static double shortestEdge(Cloth cloth) {
-        ClothMesh m = cloth.mesh();
-        double shortest = Double.MAX_VALUE;
-        for (int k = 0; k < m.faceCount(); k++) {
-            int[] face = m.face(k);
-            for (int j = 0; j < face.length; j++) shortest = Math.min(shortest, m.distance(face[j], face[(j + 1) % face.length]));
-        }
-        return shortest;
     }
 
     /** The mesh's triangles as its faces: a grid's quads become a triangle mesh of the same vertices. */

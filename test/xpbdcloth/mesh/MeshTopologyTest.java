@@ -92,4 +92,23 @@ class MeshTopologyTest {
                 assertTrue(e1x * e2y - e1y * e2x > 1e-4, "triangle " + k / 3 + " faces +z with some area");
             }
     }
+
+    /**
+     * The shortest edge is a triangle's side (a quad's fan diagonal counts: its ends are one triangle's
+     * particles) or a segment, and +∞ with neither.
+     */
+    @Test
+    void shortestEdgeIsATrianglesSideOrASegment() {
+        // A 0.5 × 0.3 quad whose fan diagonal is 0.583 m, and a 0.1 m segment hanging off it.
+        double[] x = {0, 0, 0, 0.5, 0, 0, 0.5, 0.3, 0, 0, 0.3, 0, 0, -0.1, 0};
+        ClothMesh quad = ClothMesh.of(x, new int[][] {{0, 1, 2, 3}}, null, new int[0], null);
+        assertEquals(0.3, quad.shortestEdge(), 1e-15);
+        ClothMesh withTail = ClothMesh.of(x, new int[][] {{0, 1, 2, 3}}, null, new int[] {0, 4}, null);
+        assertEquals(0.1, withTail.shortestEdge(), 1e-15);
+        // A kite whose fan diagonal (0 to 2) is shorter than every side.
+        double[] kite = {0, 0, 0, 1, -1, 0, 0.05, 0, 0, 1, 1, 0};
+        assertEquals(0.05, ClothMesh.of(kite, new int[][] {{0, 1, 2, 3}}, null, new int[0], null).shortestEdge(), 1e-15);
+        assertEquals(0.1, ClothMesh.polyline(new double[] {0, 0, 0, 0, 0.1, 0, 0, 0.3, 0}).shortestEdge(), 1e-15);
+        assertEquals(Double.POSITIVE_INFINITY, ClothMesh.polyline(new double[] {0, 0, 0}).shortestEdge());
+    }
 }
