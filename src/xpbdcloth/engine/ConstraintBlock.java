@@ -38,7 +38,7 @@ public abstract class ConstraintBlock {
     private double[] stiffnessOf, complianceOf, stiffnessPerSweepOf;
     private long preparedRevision = -1;
     /** The simulation this block is solved in, or null. */
-    Simulation owner;
+    ConstraintSet owner;
 
     ConstraintBlock(ConstraintFamily family, int arity, int capacity) { this(family, arity, 1, capacity); }
 

@@ -34,7 +34,11 @@ final class ContactSet {
     private int[] countedIn = new int[0];
     private int insideCalls;
 
+    /** The self-collision of the last collide stage, or null: its pairs are among the contacts. */
+    private SelfCollision self;
+
     int count() { return count; }
+    SelfCollision self() { return self; }
     int particle(int k) { return particle[k]; }
     Collider with(int k) { return with[k]; }
     int entry(int k) { return entry[k]; }
@@ -51,6 +55,7 @@ final class ContactSet {
      */
     void collide(Particles p, List<Sphere> spheres, List<Plane> planes, List<RigidCollider> solids, SelfCollision self, double h, Team team) {
         count = 0;
+        this.self = self;
         for (int s = 0, ns = spheres.size(); s < ns; s++) spheres.get(s).findContacts(p, h, this);
         for (int s = 0, ns = solids.size(); s < ns; s++) solids.get(s).findContacts(p, h, this);
         if (self != null) self.findContacts(p, this, team);

@@ -32,10 +32,9 @@ final class GlobalIterations implements SolveStage {
     private final ContactSet contacts;
     private final Particles particles;
     private final SolverContext ctx;
-    private final Simulation sim;
     private final SweepListener listener;
 
-    GlobalIterations(GlobalSolver global, SweepOrder local, SequentialSweeps rest, SequentialSweeps all, ContactSet contacts, Particles particles, SolverContext ctx, Simulation sim, SweepListener listener) {
+    GlobalIterations(GlobalSolver global, SweepOrder local, SequentialSweeps rest, SequentialSweeps all, ContactSet contacts, Particles particles, SolverContext ctx, SweepListener listener) {
         this.global = global;
         this.local = local;
         this.rest = rest;
@@ -43,7 +42,6 @@ final class GlobalIterations implements SolveStage {
         this.contacts = contacts;
         this.particles = particles;
         this.ctx = ctx;
-        this.sim = sim;
         this.listener = listener;
     }
 
@@ -54,7 +52,7 @@ final class GlobalIterations implements SolveStage {
             local.sweep(particles, ctx);
             global.iterate(particles, ctx);
             (contacts.count() > 0 ? all : rest).sweep();
-            listener.afterSweep(sim, substep, it);
+            listener.afterSweep(substep, it);
         }
     }
 

@@ -141,4 +141,24 @@ public final class Metrics {
             if (!Double.isFinite(p.x[k]) || !Double.isFinite(p.v[k])) return false;
         return true;
     }
+
+    /**
+     * ‖C + α̃λ‖₂ over the equality constraints (contacts and attachments left out): the residual of
+     * XPBD's constraint equation, zero when every constraint holds at its compliant equilibrium. In PBD
+     * mode α̃ is taken as 0, so it is ‖C‖₂.
+     */
+    public static double residual(Simulation sim) {
+        double sum = 0, h = sim.substep(), inverseH2 = 1.0 / (h * h);
+        Particles particles = sim.particles();
+        boolean xpbd = sim.settings().mode() == ConstraintMode.XPBD;
+        for (ConstraintBlock b : sim.blocks()) {
+            ConstraintFamily f = b.family();
+            if (f == ConstraintFamily.COLLISION || f == ConstraintFamily.ATTACHMENT) continue;
+            for (int i = 0; i < b.count(); i++) {
+                double r = b.evaluate(i, particles) + (xpbd ? b.compliance(i) * inverseH2 * b.lambda[i] : 0);
+                sum += r * r;
+            }
+        }
+        return Math.sqrt(sum);
+    }
 }

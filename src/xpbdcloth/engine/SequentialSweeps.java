@@ -9,22 +9,20 @@ final class SequentialSweeps implements SolveStage {
     private final Particles particles;
     private final SolverContext ctx;
     private final ContactSet contacts;
-    private final Simulation sim;
     private final SweepListener listener;
 
-    SequentialSweeps(SweepOrder order, Particles particles, SolverContext ctx, ContactSet contacts, Simulation sim, SweepListener listener) {
+    SequentialSweeps(SweepOrder order, Particles particles, SolverContext ctx, ContactSet contacts, SweepListener listener) {
         this.order = order;
         this.particles = particles;
         this.ctx = ctx;
         this.contacts = contacts;
-        this.sim = sim;
         this.listener = listener;
     }
 
     @Override public void solve(int substep, int iterations) {
         for (int it = 0; it < iterations; it++) {
             sweep();
-            listener.afterSweep(sim, substep, it);
+            listener.afterSweep(substep, it);
         }
     }
 

@@ -6,7 +6,7 @@ package xpbdcloth.engine;
  * word. Three implementations: {@link SequentialSweeps} (Gauss–Seidel in a fixed order, insertion or
  * coloured), {@link ParallelColouredSweeps} (the coloured order on several threads, the same result) and
  * {@link GlobalIterations} (a global Newton–PCG step per iteration, then attachments and contacts by
- * Gauss–Seidel). {@link Simulation} chooses one when the constraint set or the solver settings change,
+ * Gauss–Seidel). {@link SolveStages} chooses one when the constraint set or the solver settings change,
  * never by branches inside the substep loop.
  */
 interface SolveStage {

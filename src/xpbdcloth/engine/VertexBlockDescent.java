@@ -42,7 +42,6 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
     /** What is projected after each iteration: hard and inequality blocks, attachments (XPBD), then contacts. */
     private final SweepOrder rest;
     private final ContactSet contacts;
-    private final Simulation sim;
     private final SweepListener listener;
     /** The threads a substep's iterations run on, or null for this one (and for a listener to single iterations). */
     private final Team team;
@@ -143,12 +142,11 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
     }
 
     VertexBlockDescent(List<ConstraintBlock> body, AttachmentBlock attachments, Particles particles, SolverContext ctx, SolverSettings settings,
-                       ContactSet contacts, Simulation sim, SweepListener listener, Team team) {
+                       ContactSet contacts, SweepListener listener, Team team) {
         this.particles = particles;
         this.ctx = ctx;
         this.settings = settings;
         this.contacts = contacts;
-        this.sim = sim;
         this.listener = listener;
         this.team = team;
         n = particles.count();
@@ -434,11 +432,11 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
             return;
         }
         if (bounded) budgetAndStart(0, 1);
-        listener.afterSweep(sim, substep, -1);
+        listener.afterSweep(substep, -1);
         for (int it = 0; it < iterations; it++) {
             for (int c = 0, nc = colours(); c < nc; c++) solveColour(c, 0, 1);
             rest.sweep(particles, ctx);
-            listener.afterSweep(sim, substep, it);
+            listener.afterSweep(substep, it);
         }
         if (bounded) sumEndEnergy(0, 1);
         withoutEnergyGain();
@@ -475,7 +473,7 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
             if (choosing) inertialProjectedEnergy = projectedEnergy();
         }
         contactOf = contacts.byParticle(n, contactStart, contactOf);
-        SelfCollision self = sim.selfCollision();
+        SelfCollision self = contacts.self();
         long build = self == null ? -1 : self.builds();
         if (build != colouredForBuild) {
             colour(self);

@@ -7,6 +7,7 @@ import xpbdcloth.engine.Cloth;
 import xpbdcloth.engine.ClothBuilder;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.ConstraintMode;
+import xpbdcloth.engine.Metrics;
 import xpbdcloth.engine.Simulation;
 import xpbdcloth.engine.SolverSettings;
 
@@ -49,7 +50,7 @@ final class GaussSeidelConvergence implements Experiment {
         Simulation sim = swungCloth(res, compliance);
         sim.settings().iterations(sweeps).substeps(1);
         double[] r = new double[sweeps + 1];
-        sim.setSweepListener((s, substep, sweep) -> r[sweep + 1] = s.residual());
+        sim.setSweepListener((substep, sweep) -> r[sweep + 1] = Metrics.residual(sim));
         sim.step();
         double initial = r[0];
         for (int i = 0; i <= sweeps; i++) r[i] /= initial;

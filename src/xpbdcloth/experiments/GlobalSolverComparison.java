@@ -3,6 +3,7 @@ package xpbdcloth.experiments;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
+import xpbdcloth.engine.Metrics;
 import xpbdcloth.engine.Simulation;
 import xpbdcloth.engine.SolverType;
 
@@ -36,12 +37,12 @@ final class GlobalSolverComparison implements Experiment {
         else sim.settings().iterations(60).pcgTolerance(INNER_TOLERANCE).pcgMaxIterations(500);
         List<double[]> out = new ArrayList<>();
         double[] clock = {0, System.nanoTime(), 0}; // ms so far, last stamp, initial residual
-        sim.setSweepListener((s, substep, sweep) -> {
+        sim.setSweepListener((substep, sweep) -> {
             long now = System.nanoTime();
             if (sweep >= 0) clock[0] += (now - clock[1]) / 1e6;
-            double r = s.residual();
+            double r = Metrics.residual(sim);
             if (sweep < 0) clock[2] = r;
-            double iterations = type == SolverType.GAUSS_SEIDEL ? sweep + 1 : s.totalPcgIterations();
+            double iterations = type == SolverType.GAUSS_SEIDEL ? sweep + 1 : sim.profile().totalPcgIterations();
             double[] last = out.isEmpty() ? null : out.get(out.size() - 1);
             boolean open = last == null || last[2] > TARGET;
             // Gauss–Seidel runs up to 1e5 sweeps: keep every one of the first 100, then one per 1 % more
@@ -52,9 +53,9 @@ final class GlobalSolverComparison implements Experiment {
             clock[1] = System.nanoTime();
         });
         sim.step();
-        setupMs[0] = sim.globalSetupNanos() / 1e6;
+        setupMs[0] = sim.profile().globalSetupNanos() / 1e6;
         // The multigrid hierarchy is built at the first linearisation, inside the first iteration's time.
-        double mgMs = sim.multigridSetup()[1] / 1e6;
+        double mgMs = sim.profile().multigridSetupNanos() / 1e6;
         if (mgMs > 0) for (double[] p : out) if (p[0] > 0) p[1] -= mgMs;
         sim.close();
         return out;

@@ -55,8 +55,8 @@ final class MultigridOnTriangles implements Experiment {
         Simulation sim = swung(kind, res, type);
         long t0 = System.nanoTime();
         sim.step();
-        double total = (System.nanoTime() - t0) / 1e6, setup = sim.globalSetupNanos() / 1e6;
-        double[] r = {sim.lastPcgIterations(), total - setup, setup, sim.constraintCount()};
+        double total = (System.nanoTime() - t0) / 1e6, setup = sim.profile().globalSetupNanos() / 1e6;
+        double[] r = {sim.profile().lastPcgIterations(), total - setup, setup, sim.constraintCount()};
         sim.close();
         return r;
     }

@@ -86,7 +86,7 @@ final class Hud {
                 s.preset().name + "  —  " + (s.sideBySide() ? "side by side: PBD | XPBD" : s.mode().toString()) + (s.paused ? "   [paused]" : ""),
                 fmt("iterations %d   substeps %d   dt 1/%.0f s (%.1f ms)", s.iterations(), s.substeps(), 1 / s.dt(), 1000 * s.dt()),
                 fmt("solver %s   %s%s", s.solverType().label(), balance(sim),
-                        sim.lastPcgIterations() > 0 ? fmt("   CG iterations %d", sim.lastPcgIterations()) : ""),
+                        sim.profile().lastPcgIterations() > 0 ? fmt("   CG iterations %d", sim.profile().lastPcgIterations()) : ""),
                 km == null ? fmt("fabric %s%s%s   (F: next fabric)", fabric == null ? "(none)" : fabric.name, fabric == null || fabric.description.isEmpty() ? "" : " — " + fabric.description,
                         tethered ? ", tethered" : "") : fmt("family %s", famName),
                 km == null ? (fabric == null ? "" : fmt("  membrane warp %.0f N/m  weft %.0f N/m  ν12 %.2f  shear %.0f N/m", fabric.membrane.warpModulus,
@@ -99,7 +99,7 @@ final class Hud {
                         : fmt("step %.1f ms for %.0f ms of motion (%s)   render %.1f ms   %.0f fps   %.1f kB allocated/frame", simMs, 1000 * s.dt(),
                         realTime(simMs, 1000 * s.dt(), slowMotion), renderMs, fps, bytesPerFrame / 1024),
                 fmt("particles %d   constraints %d   contacts %d touching of %d%s%s", sim.particles().count() * running.size(), constraints,
-                        sim.touchingContacts(), sim.contactCount(), pinched(sim), recording ? "" : fmt("   contacts %.2f ms, constraints %.2f ms", sim.contactMs(), sim.constraintSolveMs())),
+                        sim.profile().touchingContacts(), sim.profile().contactCount(), pinched(sim), recording ? "" : fmt("   contacts %.2f ms, constraints %.2f ms", sim.profile().contactMs(), sim.profile().constraintSolveMs())),
                 (s.sideBySide() ? "strain: under each cloth" : fmt("strain mean %.2f %%  max %.2f %%",
                         100 * Metrics.meanClothStrain(sim), 100 * Metrics.maxClothStrain(sim)))
                         + fmt("   KE %.2e J", Metrics.kineticEnergy(sim.particles()))
@@ -282,7 +282,7 @@ final class Hud {
 
     /** ", N pinched" when colliders have closed on particles and one had to give (they are inside it), else nothing. */
     static String pinched(Simulation sim) {
-        int n = sim.pinchedParticles();
+        int n = sim.profile().pinchedParticles();
         return n == 0 ? "" : fmt(", %d pinched inside a collider", n);
     }
 }

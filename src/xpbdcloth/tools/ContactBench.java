@@ -56,8 +56,8 @@ final class ContactBench {
             sim.step();
             total += (System.nanoTime() - t0) / 1e6;
             if (step >= STEPS - STEADY) alloc += bean.getCurrentThreadAllocatedBytes() - a0;
-            contact += sim.contactMs();
-            solve += sim.constraintSolveMs();
+            contact += sim.profile().contactMs();
+            solve += sim.profile().constraintSolveMs();
             worst = Math.max(worst, TriangleIntersections.count(sim.particles().positions(), triangles));
         }
         sim.close();

@@ -189,7 +189,7 @@ class GlobalSolverTest {
         Simulation sim = c.simulation(new SolverSettings().mode(ConstraintMode.XPBD).iterations(1).substeps(1).timestep(1 / 60.0)
                 .solver(type).pcgTolerance(1e-6).pcgMaxIterations(5000));
         sim.step();
-        return sim.lastPcgIterations();
+        return sim.profile().lastPcgIterations();
     }
 
     /**

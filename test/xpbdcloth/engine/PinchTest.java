@@ -33,7 +33,7 @@ class PinchTest {
         for (int s = 0; s < 50; s++) { // 1 s: the box from 0.3 m down to −0.7 m, through the floor
             sim.step();
             for (int i = 0; i < p.count(); i++) lowest = Math.min(lowest, p.y(i));
-            pinched = Math.max(pinched, sim.pinchedParticles());
+            pinched = Math.max(pinched, sim.profile().pinchedParticles());
         }
         double highest = -Double.MAX_VALUE;
         for (int i = 0; i < p.count(); i++) highest = Math.max(highest, p.y(i));
