@@ -13,7 +13,7 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
 /**
- * The layering is one-way: tools, library → sketch → fit/experiments → usd → scene → fabric → engine → mesh. The engine (and its tests)
+ * The layering is one-way: tools, library → sketch → fit/experiments → usd → scene → fabric → engine → mesh, linalg. The engine (and its tests)
  * imports nothing of the layers above it nor of Processing; the fabric package nothing above it; the scene package nothing of the sketch,
  * the tools or the experiments. Read from the source text, so a wrong import fails here by name.
  */
@@ -54,6 +54,14 @@ class LayeringTest {
         assertEquals(List.of(), violations(Path.of("src/xpbdcloth/mesh"), project));
     }
 
+    /** Linear algebra is below the engine too: matrices and their solvers, nothing of cloth. */
+    @Test
+    void linearAlgebraImportsNothingOfTheProject() throws IOException {
+        String[] project = {"xpbdcloth.engine", "xpbdcloth.mesh", "xpbdcloth.fabric", "xpbdcloth.scene", "xpbdcloth.usd", "xpbdcloth.fit",
+                "xpbdcloth.sketch", "xpbdcloth.experiments", "xpbdcloth.tools", "xpbdcloth.library", "processing."};
+        assertEquals(List.of(), violations(Path.of("src/xpbdcloth/linalg"), project));
+    }
+
     @Test
     void sceneImportsNoSketchToolsOrExperiments() throws IOException {
         String[] above = {"xpbdcloth.fit", "xpbdcloth.sketch", "xpbdcloth.experiments", "xpbdcloth.tools", "processing."};
@@ -79,7 +87,7 @@ class LayeringTest {
     /** The Processing library is a face on the sketch's parts: nothing below it knows it exists. */
     @Test
     void nothingImportsTheLibrary() throws IOException {
-        for (String below : new String[] {"sketch", "fit", "scene", "engine", "mesh", "experiments"})
+        for (String below : new String[] {"sketch", "fit", "scene", "engine", "mesh", "linalg", "experiments"})
             assertEquals(List.of(), violations(Path.of("src/xpbdcloth/" + below), "xpbdcloth.library", "xpbdcloth.tools"));
     }
 

@@ -1,6 +1,9 @@
 package xpbdcloth.engine;
 
 import java.util.Arrays;
+import xpbdcloth.linalg.AggregationMultigrid;
+import xpbdcloth.linalg.ChainSmoother;
+import xpbdcloth.linalg.SparseMatrix;
 
 /**
  * XPBD's constraint system for the stretch (the distance constraints, {@link #takes}) solved for all of

@@ -16,7 +16,9 @@
  *       {@link xpbdcloth.engine.Collider}, which finds and projects its own contacts.</li>
  *   <li>{@link xpbdcloth.engine.Simulation}: the step, stage by stage ({@link xpbdcloth.engine.Stage}): predict,
  *       kinematics, collide (transient contacts, {@code ContactSet}), solve ({@code SolveStage}: sequential,
- *       parallel coloured or global, over a {@code SweepOrder} of blocks), update velocities, velocity pass.</li>
+ *       parallel coloured or global, over a {@code SweepOrder} of blocks, chosen by {@code SolveStages}), update
+ *       velocities, velocity pass; its constraints in a {@code ConstraintSet}, what a step cost in its
+ *       {@link xpbdcloth.engine.StepProfile}. The global solver's linear algebra is in {@code xpbdcloth.linalg}.</li>
  *   <li>{@link xpbdcloth.engine.SolverSettings}, {@link xpbdcloth.engine.ConstraintMode}: parameters and units.</li>
  *   <li>{@link xpbdcloth.engine.MeshClothBuilder}, {@link xpbdcloth.engine.ClothBuilder}, {@link xpbdcloth.engine.Cloth}:
  *       cloths from any mesh ({@code xpbdcloth.mesh}), grid cloths and ropes.</li>

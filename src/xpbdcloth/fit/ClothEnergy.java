@@ -7,6 +7,7 @@ import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.ConstraintMode;
 import xpbdcloth.engine.Particles;
 import xpbdcloth.engine.Simulation;
+import xpbdcloth.linalg.BandedMatrix;
 
 /**
  * The energy whose minimum is XPBD's rest shape, with the compliances as parameters.

@@ -1,5 +1,7 @@
 package xpbdcloth.fit;
 
+import xpbdcloth.linalg.BandedMatrix;
+
 /**
  * The rest shape ∇E(x) = 0 of a {@link ClothEnergy}, found by Newton's method with a backtracking line
  * search on E and, where the Hessian is not positive definite (a buckling cloth on the way down), a

@@ -1,4 +1,4 @@
-package xpbdcloth.engine;
+package xpbdcloth.linalg;
 
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -30,19 +30,19 @@ import java.util.List;
  * degrees of freedom, A equals α̃ on their self-stresses (Jᵀ Δλ = 0), a space about as large as the mesh,
  * which neither a smoother nor a coarse space reaches (docs/experiments.md, experiment 12).
  */
-final class AggregationMultigrid {
-    static final int COARSEST = 64;
+public final class AggregationMultigrid {
+    public static final int COARSEST = 64;
     /** A Cholesky pivot below this fraction of its diagonal counts as zero (semi-definite A). */
-    static final double PIVOT_TOLERANCE = 1e-12;
-    static final double STRENGTH = 0.25;
+    private static final double PIVOT_TOLERANCE = 1e-12;
+    private static final double STRENGTH = 0.25;
     /** Smoothing sweeps before and after the coarse correction (line Gauss–Seidel on the finest level, point Gauss–Seidel below). */
-    static final int SMOOTHING = 1;
+    private static final int SMOOTHING = 1;
     /**
      * The coarse correction is scaled up: a piecewise-constant prolongator represents smooth error too
      * crudely and its Galerkin operator is too stiff, so the plain correction undershoots (Vaněk et al.;
      * 1.5 measured best of 1, 1.5 and 2 on the global-solver experiment).
      */
-    static final double OVER_CORRECTION = 1.5;
+    private static final double OVER_CORRECTION = 1.5;
 
     private final List<SparseMatrix> levels = new ArrayList<>();
     /** aggregateOf.get(l)[i]: aggregate (row of level l+1) of row i of level l. */
@@ -54,9 +54,9 @@ final class AggregationMultigrid {
     private final ChainSmoother chains;
     private double[] cholesky;
     private int coarseSize;
-    final long setupNanos;
+    public final long setupNanos;
 
-    AggregationMultigrid(SparseMatrix fine) {
+    public AggregationMultigrid(SparseMatrix fine) {
         long t0 = System.nanoTime();
         SparseMatrix a = fine;
         levels.add(a);
@@ -90,16 +90,16 @@ final class AggregationMultigrid {
         setupNanos = System.nanoTime() - t0;
     }
 
-    int levelCount() { return levels.size(); }
+    public int levelCount() { return levels.size(); }
 
     /** Unknowns of the coarsest level, solved densely. */
-    int coarsestSize() { return coarseSize; }
+    public int coarsestSize() { return coarseSize; }
 
     /** The finest level's chains (the global solver lays its stiffness rows along them). */
-    ChainSmoother chains() { return chains; }
+    public ChainSmoother chains() { return chains; }
 
     /** Recomputes the coarse values from the fine level's current values (after a linearisation). */
-    void refresh() {
+    public void refresh() {
         chains.refresh();
         for (int l = 0; l + 1 < levels.size(); l++) restrict(l);
         factorCoarsest();
@@ -114,7 +114,7 @@ final class AggregationMultigrid {
     }
 
     /** z = M⁻¹ r on the fine level's rows (the first ones of r and z): one V-cycle from a zero guess. */
-    void apply(double[] r, double[] z) {
+    public void apply(double[] r, double[] z) {
         int n = levels.get(0).size;
         System.arraycopy(r, 0, rhs.get(0), 0, n);
         cycle(0);

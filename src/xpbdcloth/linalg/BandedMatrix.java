@@ -1,4 +1,4 @@
-package xpbdcloth.fit;
+package xpbdcloth.linalg;
 
 /**
  * A symmetric n × n matrix with half-bandwidth b (entry (i, j) is zero when |i − j| &gt; b), stored as its
@@ -9,13 +9,13 @@ package xpbdcloth.fit;
  * freedom. Factoring then costs n·b² (0.01 s for a 16² cloth, 0.2 s for 32²) where a dense factor costs
  * n³/3; a general mesh numbered badly only costs more, never gives a wrong answer.
  */
-final class BandedMatrix {
-    final int n, band;
+public final class BandedMatrix {
+    public final int n, band;
     /** Row i holds entries (i, i − band … i) at [i·(band+1) + (j − i + band)]. */
     private final double[] lower;
     private boolean factored;
 
-    BandedMatrix(int n, int band) {
+    public BandedMatrix(int n, int band) {
         this.n = n;
         this.band = Math.min(band, Math.max(n - 1, 0));
         lower = new double[n * (this.band + 1)];
@@ -24,18 +24,18 @@ final class BandedMatrix {
     private int at(int i, int j) { return i * (band + 1) + (j - i + band); }
 
     /** Adds v to (i, j) and, by symmetry, (j, i): call it once per unordered pair with i ≥ j, or for both orders with v/2. */
-    void add(int i, int j, double v) {
+    public void add(int i, int j, double v) {
         if (i < j) { int t = i; i = j; j = t; }
         if (i - j > band) throw new IllegalStateException("entry (" + i + ", " + j + ") outside the band " + band);
         lower[at(i, j)] += v;
     }
 
-    double get(int i, int j) {
+    public double get(int i, int j) {
         if (i < j) { int t = i; i = j; j = t; }
         return i - j > band ? 0 : lower[at(i, j)];
     }
 
-    BandedMatrix copy() {
+    public BandedMatrix copy() {
         BandedMatrix m = new BandedMatrix(n, band);
         System.arraycopy(lower, 0, m.lower, 0, lower.length);
         m.factored = factored;
@@ -46,7 +46,7 @@ final class BandedMatrix {
      * Replaces the matrix by its Cholesky factor; false (and the matrix left half-factored, so copy first)
      * when it is not positive definite: a pivot at or below {@code 1e-14} of the largest diagonal entry.
      */
-    boolean factor() {
+    public boolean factor() {
         double maxDiag = 0;
         for (int i = 0; i < n; i++) maxDiag = Math.max(maxDiag, lower[at(i, i)]);
         double floor = 1e-14 * maxDiag;
@@ -69,7 +69,7 @@ final class BandedMatrix {
     }
 
     /** Solves A x = b in place with the factor (b becomes x). */
-    void solve(double[] b) {
+    public void solve(double[] b) {
         if (!factored) throw new IllegalStateException("factor() first");
         for (int i = 0; i < n; i++) {
             double s = b[i];

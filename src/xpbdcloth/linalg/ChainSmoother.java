@@ -1,4 +1,4 @@
-package xpbdcloth.engine;
+package xpbdcloth.linalg;
 
 import java.util.Arrays;
 
@@ -21,8 +21,8 @@ import java.util.Arrays;
  * each chain's block of A is then exactly tridiagonal, and a sweep is block Gauss–Seidel, convergent for
  * any symmetric positive-definite A). Values are refactored in place after each linearisation.
  */
-final class ChainSmoother {
-    static final double STRENGTH = 0.25;
+public final class ChainSmoother {
+    private static final double STRENGTH = 0.25;
 
     private final SparseMatrix a;
     /** Rows in chain order; chain c is order[start[c] .. start[c+1]). */
@@ -46,7 +46,7 @@ final class ChainSmoother {
     }
 
     /** Given chains: {order, start} as in {@link #order} and {@link #start}, every row in exactly one. */
-    ChainSmoother(SparseMatrix a, int[][] chains) {
+    public ChainSmoother(SparseMatrix a, int[][] chains) {
         this.a = a;
         order = chains[0];
         start = chains[1];
@@ -86,7 +86,7 @@ final class ChainSmoother {
     }
 
     /** {order, start}: a greedy maximum-weight path cover of the strong couplings (see the class comment). */
-    static int[][] strongChains(SparseMatrix a) {
+    private static int[][] strongChains(SparseMatrix a) {
         int n = a.size;
         int strong = 0;
         for (int i = 0; i < n; i++) for (int k = a.rowStart[i]; k < a.rowStart[i + 1]; k++) if (a.col[k] > i && isStrong(a, i, k)) strong++;
@@ -174,14 +174,14 @@ final class ChainSmoother {
         return j != i && Math.abs(a.val[k]) >= STRENGTH * Math.sqrt(a.val[a.diag[i]] * a.val[a.diag[j]]);
     }
 
-    int chainCount() { return start.length - 1; }
+    public int chainCount() { return start.length - 1; }
     /** Rows in chain order; chain c is {@code order()[start()[c] .. start()[c+1])}. */
-    int[] order() { return order; }
-    int[] start() { return start; }
-    int chainOf(int row) { return chainOf[row]; }
+    public int[] order() { return order; }
+    public int[] start() { return start; }
+    public int chainOf(int row) { return chainOf[row]; }
 
     /** LDLᵀ of each chain's tridiagonal block, from A's current values. */
-    void refresh() {
+    public void refresh() {
         for (int c = 0; c + 1 < start.length; c++)
             for (int k = start[c]; k < start[c + 1]; k++) {
                 double d = a.val[a.diag[order[k]]];
@@ -218,7 +218,7 @@ final class ChainSmoother {
      * x = T⁻¹ b on the listed chains (T: each chain's tridiagonal block, couplings between chains left
      * out: block Jacobi), for rows {@code offset + row} of b and x.
      */
-    void solveChains(int[] chains, int count, double[] b, double[] x, int offset) {
+    public void solveChains(int[] chains, int count, double[] b, double[] x, int offset) {
         for (int t = 0; t < count; t++) {
             int c = chains[t], from = start[c], to = start[c + 1];
             for (int k = from; k < to; k++) y[k] = b[offset + order[k]];

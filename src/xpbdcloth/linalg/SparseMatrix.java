@@ -1,14 +1,14 @@
-package xpbdcloth.engine;
+package xpbdcloth.linalg;
 
 /** A symmetric sparse matrix in compressed rows, with its pattern fixed and its values refilled in place. */
-final class SparseMatrix {
-    final int size;
-    final int[] rowStart, col;
-    final double[] val;
+public final class SparseMatrix {
+    public final int size;
+    public final int[] rowStart, col;
+    public final double[] val;
     /** Index of the diagonal entry of each row in {@link #val}. */
-    final int[] diag;
+    public final int[] diag;
 
-    SparseMatrix(int size, int[] rowStart, int[] col) {
+    public SparseMatrix(int size, int[] rowStart, int[] col) {
         this.size = size;
         this.rowStart = rowStart;
         this.col = col;
@@ -18,7 +18,7 @@ final class SparseMatrix {
     }
 
     /** Position of (i, j) in the value array, or -1 (columns of a row are sorted). */
-    int find(int i, int j) {
+    public int find(int i, int j) {
         int lo = rowStart[i], hi = rowStart[i + 1] - 1;
         while (lo <= hi) {
             int mid = (lo + hi) >>> 1;
@@ -30,7 +30,7 @@ final class SparseMatrix {
     }
 
     /** y = A x. */
-    void multiply(double[] x, double[] y) {
+    public void multiply(double[] x, double[] y) {
         for (int i = 0; i < size; i++) {
             double s = 0;
             for (int k = rowStart[i]; k < rowStart[i + 1]; k++) s += val[k] * x[col[k]];
