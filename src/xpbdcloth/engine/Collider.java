@@ -4,7 +4,7 @@ package xpbdcloth.engine;
  * A solid the cloth cannot enter (a sphere, a plane, a box, a capsule): in the collide stage it lists the
  * particles it may touch this substep, and in the solve it projects the contact with one of them.
  * Kinematic: the cloth never pushes it. Each kind's contact maths lives in its own class
- * ({@link SphereCollisionConstraint}, {@link PlaneCollisionConstraint}, {@link ShapeCollisionConstraint});
+ * ({@link SphereContact}, {@link PlaneContact}, {@link ShapeContact});
  * this is only how {@link ContactSet} reaches it, with what every contact shares: the cloth's half
  * thickness kept from the surface, and Coulomb's two coefficients.
  */

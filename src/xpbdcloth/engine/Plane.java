@@ -48,7 +48,7 @@ public final class Plane extends Collider {
         }
     }
 
-    @Override void project(Particles p, int i, double h) { PlaneCollisionConstraint.project(p, i, this, h); }
+    @Override void project(Particles p, int i, double h) { PlaneContact.project(p, i, this, h); }
 
     @Override double clearance(Particles p, int i) { return distance(p.x[3 * i], p.x[3 * i + 1], p.x[3 * i + 2]) - margin; }
 

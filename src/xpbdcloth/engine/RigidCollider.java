@@ -6,7 +6,7 @@ package xpbdcloth.engine;
  * back. The pose is a function of time alone, R(t) = rot(ω, |ω| t) R₀ and c(t) from the path, so a
  * step that is rolled back needs no collider state restored. A kind gives only its shape, in its own
  * frame: the signed distance to its surface and that distance's gradient ({@link #distance}); the
- * contact, with friction and the continuous test against tunnelling, is {@link ShapeCollisionConstraint}.
+ * contact, with friction and the continuous test against tunnelling, is {@link ShapeContact}.
  */
 public abstract class RigidCollider extends Collider {
     private final SpherePath path;
@@ -91,7 +91,7 @@ public abstract class RigidCollider extends Collider {
         }
     }
 
-    @Override void project(Particles p, int i, double h) { ShapeCollisionConstraint.project(p, i, this, h); }
+    @Override void project(Particles p, int i, double h) { ShapeContact.project(p, i, this, h); }
 
     @Override double clearance(Particles p, int i) {
         double[][] w = work.get();

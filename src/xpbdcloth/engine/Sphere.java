@@ -82,7 +82,7 @@ public final class Sphere extends Collider {
         }
     }
 
-    @Override void project(Particles p, int i, double h) { SphereCollisionConstraint.project(p, i, this, h); }
+    @Override void project(Particles p, int i, double h) { SphereContact.project(p, i, this, h); }
 
     @Override double clearance(Particles p, int i) {
         double dx = p.x[3 * i] - cx, dy = p.x[3 * i + 1] - cy, dz = p.x[3 * i + 2] - cz;

@@ -10,9 +10,11 @@
  *       rope links), {@link xpbdcloth.engine.ShearBlock} (the angle between two edges at a vertex),
  *       {@link xpbdcloth.engine.BendBlock} (Kelager's triangle bending), {@link xpbdcloth.engine.AttachmentBlock}
  *       (a particle held at a moving target: the mouse grab); the views {@code DistanceConstraint} and so on.</li>
- *   <li>{@link xpbdcloth.engine.SphereCollisionConstraint}, {@code PlaneCollisionConstraint}: sphere and plane
- *       contacts (the projections the transient contacts of {@code ContactSet} use), with the one Coulomb
- *       friction law of {@code CoulombFriction}; {@link xpbdcloth.engine.Plane}: fixed planes; both are a
+ *   <li>Contacts, one class per kind of surface, named …Contact: {@link xpbdcloth.engine.SphereContact},
+ *       {@code PlaneContact}, {@code ShapeContact} (boxes and capsules): each one's C, ∇C and projection, which
+ *       the transient contacts of {@code ContactSet} use, with the one Coulomb friction law of
+ *       {@code CoulombFriction}; the surfaces themselves ({@link xpbdcloth.engine.Sphere}, {@link xpbdcloth.engine.Plane},
+ *       {@link xpbdcloth.engine.RigidCollider}, {@link xpbdcloth.engine.MeshCollider}) are each a
  *       {@link xpbdcloth.engine.Collider}, which finds and projects its own contacts.</li>
  *   <li>{@link xpbdcloth.engine.Simulation}: the step, stage by stage ({@link xpbdcloth.engine.Stage}): predict,
  *       kinematics, collide (transient contacts, {@code ContactSet}), solve ({@code SolveStage}: sequential,

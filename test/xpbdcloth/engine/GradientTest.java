@@ -20,8 +20,8 @@ class GradientTest {
         assertGradientMatchesDifferences(c.getClass().getSimpleName(), c.particles(), c::evaluate, c::gradient, p);
     }
 
-    static void assertGradientMatchesDifferences(SphereCollisionConstraint c, Particles p) {
-        assertGradientMatchesDifferences("SphereCollisionConstraint", c.particles(), c::evaluate, c::gradient, p);
+    static void assertGradientMatchesDifferences(SphereContact c, Particles p) {
+        assertGradientMatchesDifferences("SphereContact", c.particles(), c::evaluate, c::gradient, p);
     }
 
     static void assertGradientMatchesDifferences(String name, int[] ids, java.util.function.ToDoubleFunction<Particles> value,
@@ -79,7 +79,7 @@ class GradientTest {
         for (long seed = 0; seed < 20; seed++) {
             Particles p = randomParticles(1, seed);
             Sphere s = new Sphere(SpherePath.fixed(0.2, 0.3, 0.1), 0.25, 0.01, 0.5, 0.3);
-            assertGradientMatchesDifferences(new SphereCollisionConstraint(0, s), p);
+            assertGradientMatchesDifferences(new SphereContact(0, s), p);
             assertGradientMatchesDifferences(new AttachmentConstraint(0, 0.9, -0.2, 0.4), p);
         }
     }

@@ -25,8 +25,8 @@ package xpbdcloth.engine;
  * Optimization for Robust Signed Distance Field Collision"), reduced here to one particle and a convex
  * solid.
  */
-final class ShapeCollisionConstraint {
-    private ShapeCollisionConstraint() {}
+final class ShapeContact {
+    private ShapeContact() {}
 
     /** Relative motion (as a fraction of half thickness plus margin) above which a contact is followed continuously. */
     static final double FAST = 0.25;

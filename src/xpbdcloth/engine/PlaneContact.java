@@ -12,8 +12,8 @@ package xpbdcloth.engine;
  * sphere (Macklin et al. 2014, eq. 24–25). No degenerate case: n is fixed and unit.
  * Found each substep by {@link ContactSet} like the sphere contacts, and projected after them.
  */
-final class PlaneCollisionConstraint {
-    private PlaneCollisionConstraint() {}
+final class PlaneContact {
+    private PlaneContact() {}
 
     /** Moves particle i out of the plane and applies friction; returns the Δλ of the normal correction. */
     static double project(Particles p, int i, Plane s, double h) {

@@ -25,11 +25,11 @@ package xpbdcloth.engine;
  * this class is one contact to look at (its C, its gradient), not a {@link Constraint}: it has no
  * stiffness or compliance to set.
  */
-public final class SphereCollisionConstraint {
+public final class SphereContact {
     final int i;
     final Sphere sphere;
 
-    public SphereCollisionConstraint(int particle, Sphere sphere) {
+    public SphereContact(int particle, Sphere sphere) {
         if (sphere == null) throw new IllegalArgumentException("sphere must not be null, was null");
         this.i = Check.atLeast("particle", particle, 0);
         this.sphere = sphere;
