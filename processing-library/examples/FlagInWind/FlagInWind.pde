@@ -27,5 +27,5 @@ void draw() {
   noLights();
   fill(20);
   textSize(15);
-  text("wind " + nf((float) cloth.state().windSpeed(), 1, 1) + " m/s " + (cloth.state().windOn() ? "on" : "off") + "   (w, d, e / E)", 20, 30);
+  text("wind " + nf((float) cloth.windSpeed(), 1, 1) + " m/s " + (cloth.windOn() ? "on" : "off") + "   (w, d, e / E)", 20, 30);
 }

@@ -3,7 +3,6 @@
 // cloth's stays where its compliance puts it (that is the point of XPBD).
 import xpbdcloth.library.*;
 import xpbdcloth.engine.*;
-import xpbdcloth.scene.Scene;
 
 ClothView cloth;
 
@@ -23,10 +22,10 @@ void draw() {
   noLights();
   fill(235);
   textSize(16);
-  java.util.List<Scene> scenes = cloth.state().running();
-  text("iterations " + cloth.state().iterations() + "  (i / I)    dt 1/" + round(1 / (float) cloth.state().dt()) + " s  (t)", 20, 30);
-  for (int i = 0; i < scenes.size(); i++) {
-    Simulation sim = scenes.get(i).simulation();
+  java.util.List<Simulation> sims = cloth.simulations();
+  text("iterations " + cloth.iterations() + "  (i / I)    dt 1/" + round(1 / (float) cloth.dt()) + " s  (t)", 20, 30);
+  for (int i = 0; i < sims.size(); i++) {
+    Simulation sim = sims.get(i);
     float strain = 100 * (float) Metrics.maxStrain(sim, ConstraintFamily.STRUCTURAL);
     text((i == 0 ? "PBD" : "XPBD") + "  max stretch " + nf(strain, 1, 2) + " %", 20 + i * width / 2, height - 20);
   }

@@ -6,9 +6,16 @@ import processing.core.PConstants;
 import processing.event.KeyEvent;
 import processing.event.MouseEvent;
 import processing.opengl.PGraphicsOpenGL;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
 import xpbdcloth.engine.Cloth;
+import xpbdcloth.engine.ConstraintMode;
 import xpbdcloth.engine.Simulation;
+import xpbdcloth.engine.SolverType;
+import xpbdcloth.scene.Limits;
 import xpbdcloth.scene.PresetLoader;
+import xpbdcloth.scene.Scene;
 import xpbdcloth.sketch.ClothRenderer;
 import xpbdcloth.sketch.FramePacer;
 import xpbdcloth.sketch.Grab;
@@ -43,8 +50,9 @@ import xpbdcloth.sketch.SketchState;
  * it half a turn about x, so that up is up on screen and the scene's +z points away from Processing's
  * default camera (add {@code rotateY(PI)} to see it from its +z side, as the xpbd-cloth sketch does). Drag the cloth with the left mouse button (it is thrown when released);
  * the sketch's keys (m for PBD/XPBD, i/I iterations, b side by side, space pause, r reset, …) work as in
- * the xpbd-cloth sketch unless {@link #keys(boolean)} turns them off. The engine is yours too:
- * {@link #simulation()} and {@link #state()}.
+ * the xpbd-cloth sketch unless {@link #keys(boolean)} turns them off; the same controls are methods here
+ * ({@link #iterations(int)}, {@link #mode(ConstraintMode)}, {@link #wind(boolean)}, …). The engine is yours
+ * too: {@link #simulation()}, {@link #simulations()}.
  */
 public final class ClothView {
     /** Pixels per metre when the sketch does not choose: a 1 m cloth a little under half of an 800 px window. */
@@ -249,8 +257,71 @@ public final class ClothView {
     /** The (first) running cloth. */
     public Cloth cloth() { return state.running().get(0).cloth(); }
 
-    /** Every control of the full sketch: mode, iterations, substeps, dt, materials, wind, scenes, side by side. */
-    public SketchState state() { return state; }
+    /** Every running simulation: the one cloth, or side by side the PBD one (left) and the XPBD one (right). */
+    public List<Simulation> simulations() {
+        List<Simulation> out = new ArrayList<>();
+        for (Scene s : state.running()) out.add(s.simulation());
+        return Collections.unmodifiableList(out);
+    }
+
+    // ---- The sketch's controls, as methods (the keys call the same) ----------------------------------
+
+    public ConstraintMode mode() { return state.mode(); }
+    public int iterations() { return state.iterations(); }
+    public int substeps() { return state.substeps(); }
+    /** The timestep, s. */
+    public double dt() { return state.dt(); }
+    public SolverType solver() { return state.solverType(); }
+    public boolean paused() { return state.paused(); }
+    public boolean windOn() { return state.windOn(); }
+    /** The wind's speed, m/s (e / E change it by 0.5). */
+    public double windSpeed() { return state.windSpeed(); }
+
+    /**
+     * PBD or XPBD for the running cloth, as the m key; refused with a {@link #message()} side by side (it
+     * shows both) or for PBD under a global solver.
+     */
+    public ClothView mode(ConstraintMode m) {
+        if (m == null) throw new IllegalArgumentException("mode must be PBD or XPBD, was null");
+        if (state.mode() != m) state.toggleMode();
+        return this;
+    }
+
+    /** Solver iterations per substep, in [1, 1000]; refused with a {@link #message()} beyond the presets' work limit. */
+    public ClothView iterations(int n) {
+        check("iterations", n, Limits.ITERATIONS);
+        state.changeIterations(n - state.iterations());
+        return this;
+    }
+
+    /** Substeps per step, in [1, 100]; refused with a {@link #message()} beyond the presets' work limit. */
+    public ClothView substeps(int n) {
+        check("substeps", n, Limits.SUBSTEPS);
+        state.changeSubsteps(n - state.substeps());
+        return this;
+    }
+
+    public ClothView paused(boolean on) {
+        if (state.paused() != on) state.togglePause();
+        return this;
+    }
+
+    /** The wind on or off, as the w key (a scene without wind gets the sketch's breeze). */
+    public ClothView wind(boolean on) {
+        if (state.windOn() != on) state.toggleWind();
+        return this;
+    }
+
+    /** The scene back at its start, as the r key. */
+    public ClothView reset() {
+        release();
+        state.reset();
+        return this;
+    }
+
+    private static void check(String field, int value, Limits.Range range) {
+        if (!range.contains(value)) throw new IllegalArgumentException(field + " must be in " + range.text() + ", was " + value);
+    }
 
     /** PBD on the left and XPBD on the right, the same cloth otherwise. */
     public ClothView sideBySide(boolean on) {

@@ -15,7 +15,8 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * The library's mouse under a camera it does not own: {@link GrabProbe} sets its own eye and rotations
  * (what PeasyCam does), grabs a particle where Processing projects it, drags it 6 px a frame and lets go.
- * The right particle is taken, it stays under the pointer, and it leaves with the drag's speed.
+ * The right particle is taken, it stays under the pointer, and it leaves with the drag's speed. Then the
+ * sketch's controls through the library's own methods reach the engine, and a bad value is refused by name.
  */
 class ClothViewTest {
     @Test
@@ -47,6 +48,16 @@ class ClothViewTest {
         assertEquals(drag, vx, 0.25 * drag, "thrown along the drag at its speed (px/s on screen)");
         assertTrue(Math.abs(vy) < 0.25 * drag, "not up or down the screen: " + vy + " px/s");
         assertEquals("-1", m.get("held_after_release"), "let go");
+        assertEquals("7", m.get("iterations"), text);
+        assertEquals("7", m.get("engine_iterations"), "the running simulation's settings");
+        assertEquals("3", m.get("substeps"), text);
+        assertEquals("iterations_must_be_in_[1,_1000],_was_0", m.get("refused"));
+        assertEquals("true", m.get("wind"));
+        assertEquals("1", m.get("forces_added"), "the wind is a force on the running simulation");
+        assertEquals("2", m.get("simulations"), "side by side");
+        assertEquals("PBD", m.get("left"));
+        assertEquals("XPBD", m.get("right"));
+        assertEquals("true", m.get("paused"));
     }
 
     @Test

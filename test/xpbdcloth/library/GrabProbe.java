@@ -68,12 +68,32 @@ public class GrabProbe extends PApplet {
                 popMatrix();
                 cloth.release();
                 println("throw_px_per_s=" + (sx - s[0]) / dt + " " + (sy - s[1]) / dt);
-                println("drag_px_per_s=" + DRAG_PX_PER_FRAME / cloth.state().dt());
+                println("drag_px_per_s=" + DRAG_PX_PER_FRAME / cloth.dt());
                 println("held_after_release=" + cloth.grabbed());
+                controls();
                 exit();
             } else cloth.dragTo(startX + k * DRAG_PX_PER_FRAME, startY);
         }
         cloth.step();
+    }
+
+    /** The sketch's controls as the library's methods, reported as key=value (no spaces in values). */
+    void controls() {
+        cloth.iterations(7).substeps(3);
+        println("iterations=" + cloth.iterations() + " substeps=" + cloth.substeps() + " engine_iterations=" + cloth.simulation().settings().iterations());
+        try {
+            cloth.iterations(0);
+            println("refused=nothing");
+        } catch (IllegalArgumentException e) {
+            println("refused=" + e.getMessage().replace(' ', '_'));
+        }
+        int forces = cloth.simulation().forces().size();
+        cloth.wind(true);
+        println("wind=" + cloth.windOn() + " forces_added=" + (cloth.simulation().forces().size() - forces));
+        cloth.sideBySide(true).paused(true);
+        java.util.List<xpbdcloth.engine.Simulation> sims = cloth.simulations();
+        println("simulations=" + sims.size() + " left=" + sims.get(0).settings().mode() + " right=" + sims.get(1).settings().mode()
+                + " paused=" + cloth.paused());
     }
 
     public static void main(String[] args) { PApplet.main(GrabProbe.class.getName()); }
