@@ -40,18 +40,19 @@ final class GeometricStiffness {
     /** λ after the previous global iteration, per listed constraint. */
     private final double[] lagged;
 
-    GeometricStiffness(Constraint[] cs) {
+    GeometricStiffness(ConstraintRows rows) {
+        final ConstraintBlock[] blocks = rows.block;
         int n = 0, coeffs = 0;
-        for (Constraint c : cs) if (c.block instanceof LinearLength) { n++; coeffs += c.block.arity(); }
+        for (ConstraintBlock b : blocks) if (b instanceof LinearLength) { n++; coeffs += b.arity(); }
         constraint = new int[n];
         coefficientStart = new int[n + 1];
         coefficients = new double[coeffs];
         lagged = new double[n];
         int j = 0;
-        for (int i = 0; i < cs.length; i++) {
-            if (!(cs[i].block instanceof LinearLength)) continue;
-            LinearLength form = (LinearLength) cs[i].block;
-            int arity = cs[i].block.arity();
+        for (int i = 0; i < blocks.length; i++) {
+            if (!(blocks[i] instanceof LinearLength)) continue;
+            LinearLength form = (LinearLength) blocks[i];
+            int arity = blocks[i].arity();
             constraint[j] = i;
             coefficientStart[j + 1] = coefficientStart[j] + arity;
             for (int k = 0; k < arity; k++) coefficients[coefficientStart[j] + k] = form.coefficient(k);
@@ -66,16 +67,16 @@ final class GeometricStiffness {
      * {@code at2} in {@code grad}) and returns their compliance 1/κ in α̃'s units (1/kg), or +∞ when the
      * constraint is not in tension or has no direction (the rows are then zero).
      */
-    double fill(int j, Particles p, Constraint c, double[] grad, int at1, int at2) {
+    double fill(int j, Particles p, ConstraintBlock block, int index, double[] grad, int at1, int at2) {
         int arity = coefficientStart[j + 1] - coefficientStart[j];
         double dx = 0, dy = 0, dz = 0;
         for (int k = 0; k < arity; k++) {
-            int q = 3 * c.block.particle(c.index, k);
+            int q = 3 * block.particle(index, k);
             double ck = coefficients[coefficientStart[j] + k];
             dx += ck * p.x[q]; dy += ck * p.x[q + 1]; dz += ck * p.x[q + 2];
         }
         double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-        double tension = -Math.min(c.lambda(), lagged[j]);
+        double tension = -Math.min(block.lambda[index], lagged[j]);
         if (!(tension > 0) || len < DistanceBlock.MIN_LENGTH) {
             java.util.Arrays.fill(grad, at1, at1 + 3 * arity, 0);
             java.util.Arrays.fill(grad, at2, at2 + 3 * arity, 0);
@@ -101,7 +102,7 @@ final class GeometricStiffness {
     }
 
     /** Records each listed constraint's λ after a global iteration, for the next one's κ. */
-    void remember(Constraint[] cs) {
-        for (int j = 0; j < constraint.length; j++) lagged[j] = cs[constraint[j]].lambda();
+    void remember(ConstraintBlock[] block, int[] index) {
+        for (int j = 0; j < constraint.length; j++) lagged[j] = block[constraint[j]].lambda[index[constraint[j]]];
     }
 }

@@ -23,7 +23,9 @@ import xpbdcloth.linalg.SparseMatrix;
  * values in place, so a step allocates nothing.
  */
 final class GlobalSolver {
-    private final Constraint[] cs;
+    /** The rows the system takes, as (block, index). */
+    private final ConstraintBlock[] rowBlock;
+    private final int[] rowIndex;
     /** Constraints, and rows of the system: the constraints', then two per {@link GeometricStiffness} entry. */
     private final int m, rows;
     private final GeometricStiffness geometric;
@@ -103,10 +105,11 @@ final class GlobalSolver {
     /** The most κ Σ cₖ² wₖ a stiffness row is given (see {@link #lineariseStiffness}). */
     static final double STIFFEST = 100;
 
-    GlobalSolver(Constraint[] constraints, int particleCount, boolean multigrid, double tolerance, int maxIterations) {
+    GlobalSolver(ConstraintRows constraints, int particleCount, boolean multigrid, double tolerance, int maxIterations) {
         long t0 = System.nanoTime();
-        this.cs = constraints;
-        this.m = constraints.length;
+        this.rowBlock = constraints.block;
+        this.rowIndex = constraints.index;
+        this.m = constraints.count();
         this.multigrid = multigrid;
         this.tolerance = tolerance;
         this.maxIterations = maxIterations;
@@ -116,7 +119,7 @@ final class GlobalSolver {
         int[][] ps = new int[rows][];
         int maxEntries = 0;
         for (int i = 0; i < rows; i++) {
-            ps[i] = constraints[i < m ? i : geometric.constraint[(i - m) / 2]].particles();
+            ps[i] = constraints.particles(i < m ? i : geometric.constraint[(i - m) / 2]);
             entryStart[i + 1] = entryStart[i] + ps[i].length;
             maxEntries = Math.max(maxEntries, ps[i].length);
         }
@@ -236,10 +239,15 @@ final class GlobalSolver {
         start = new double[3 * particleCount];
         reach = new double[particleCount];
         Arrays.fill(reach, Double.POSITIVE_INFINITY);
-        for (Constraint con : constraints) {
-            if (!(con instanceof DistanceConstraint) || ((DistanceConstraint) con).restLength() <= 0) continue;
-            double r = MAX_MOVE * ((DistanceConstraint) con).restLength();
-            for (int q : con.particles()) reach[q] = Math.min(reach[q], r);
+        for (int i = 0; i < m; i++) {
+            if (!(rowBlock[i] instanceof DistanceBlock)) continue;
+            DistanceBlock edge = (DistanceBlock) rowBlock[i];
+            double rest = edge.restLength(rowIndex[i]);
+            if (rest <= 0) continue;
+            for (int end = 0; end < 2; end++) {
+                int q = edge.particle(rowIndex[i], end);
+                reach[q] = Math.min(reach[q], MAX_MOVE * rest);
+            }
         }
         patternNanos = System.nanoTime() - t0;
     }
@@ -248,7 +256,10 @@ final class GlobalSolver {
     static boolean takes(ConstraintBlock b) { return b instanceof DistanceBlock; }
 
     boolean multigrid() { return multigrid; }
-    Constraint[] constraints() { return cs; }
+    /** Checks every row's particles after an iteration (the replay of a step that diverged). */
+    void check(StepProbe probe) {
+        for (int i = 0; i < m; i++) probe.check(rowBlock[i], rowIndex[i]);
+    }
     double tolerance() { return tolerance; }
     int maxIterations() { return maxIterations; }
     int lastIterations() { return lastIterations; }
@@ -275,7 +286,7 @@ final class GlobalSolver {
      */
     void iterate(Particles particles, SolverContext ctx) {
         step(particles, ctx);
-        geometric.remember(cs);
+        geometric.remember(rowBlock, rowIndex);
     }
 
     private void step(Particles particles, SolverContext ctx) {
@@ -294,7 +305,7 @@ final class GlobalSolver {
             for (int k = 0; k < x.length; k++) x[k] = start[k] + s * move[k];
             double merit = meritAt(particles, s);
             if (merit <= merit0 + 2 * ARMIJO * s * slope) {
-                for (int i = 0; i < m; i++) cs[i].block.lambda[cs[i].index] += s * dl[i];
+                for (int i = 0; i < m; i++) rowBlock[i].lambda[rowIndex[i]] += s * dl[i];
                 return;
             }
         }
@@ -336,7 +347,9 @@ final class GlobalSolver {
     private double meritAt(Particles particles, double s) {
         double sum = 0;
         for (int i = 0; i < m; i++) {
-            double f = cs[i].evaluate(particles) + alphaTilde[i] * (cs[i].lambda() + s * dl[i]);
+            ConstraintBlock blk = rowBlock[i];
+            int j = rowIndex[i];
+            double f = blk.evaluate(j, particles) + alphaTilde[i] * (blk.lambda[j] + s * dl[i]);
             sum += f * f;
         }
         return sum;
@@ -344,13 +357,14 @@ final class GlobalSolver {
 
     private void linearise(Particles particles, SolverContext ctx) {
         for (int i = 0; i < m; i++) {
-            Constraint con = cs[i];
-            c[i] = con.evaluate(particles);
-            alphaTilde[i] = con.compliance() * ctx.inverseH2; // XPBD only: SolverSettings refuses PBD here
-            con.gradient(particles, scratch);
+            ConstraintBlock blk = rowBlock[i];
+            int j = rowIndex[i];
+            c[i] = blk.evaluate(j, particles);
+            alphaTilde[i] = blk.compliance(j) * ctx.inverseH2; // XPBD only: SolverSettings refuses PBD here
+            blk.gradient(j, particles, scratch);
             int n = 3 * (entryStart[i + 1] - entryStart[i]);
             System.arraycopy(scratch, 0, grad, 3 * entryStart[i], n);
-            b[i] = -c[i] - alphaTilde[i] * con.lambda();
+            b[i] = -c[i] - alphaTilde[i] * blk.lambda[j];
         }
         Arrays.fill(a.val, 0);
         final double[] w = particles.w;
@@ -389,7 +403,7 @@ final class GlobalSolver {
         activeCount = 0;
         for (int j = 0; j < geometric.count(); j++) {
             int row = m + 2 * j, e0 = entryStart[row], e1 = entryStart[row + 1], e2 = entryStart[row + 2];
-            double compliance = geometric.fill(j, particles, cs[geometric.constraint[j]], grad, 3 * e0, 3 * e1);
+            double compliance = geometric.fill(j, particles, rowBlock[geometric.constraint[j]], rowIndex[geometric.constraint[j]], grad, 3 * e0, 3 * e1);
             double wSum = 0;
             for (int e = e0; e < e1; e++) {
                 double gx = grad[3 * e], gy = grad[3 * e + 1], gz = grad[3 * e + 2];

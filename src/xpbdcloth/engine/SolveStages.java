@@ -93,9 +93,9 @@ final class SolveStages {
         boolean mg = settings.solver() == SolverType.MULTIGRID_PCG;
         if (global == null || globalVersion != constraints.clothVersion() || global.multigrid() != mg
                 || global.tolerance() != settings.pcgTolerance() || global.maxIterations() != settings.pcgMaxIterations()) {
-            List<Constraint> rows = new ArrayList<>();
-            for (ConstraintBlock b : constraints.cloth()) if (GlobalSolver.takes(b)) for (int i = 0; i < b.count(); i++) rows.add(b.view(i));
-            global = new GlobalSolver(rows.toArray(new Constraint[0]), particles.count(), mg, settings.pcgTolerance(), settings.pcgMaxIterations());
+            List<ConstraintBlock> taken = new ArrayList<>();
+            for (ConstraintBlock b : constraints.cloth()) if (GlobalSolver.takes(b)) taken.add(b);
+            global = new GlobalSolver(ConstraintRows.of(taken), particles.count(), mg, settings.pcgTolerance(), settings.pcgMaxIterations());
             globalVersion = constraints.clothVersion();
             globalSetups++;
         }

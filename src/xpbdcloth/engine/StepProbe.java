@@ -36,7 +36,7 @@ final class StepProbe implements StepObserver {
 
     /** After a global iteration: the first body constraint on a non-finite particle names the family. */
     void check(GlobalSolver g) {
-        for (Constraint c : g.constraints()) check(c.block, c.index);
+        g.check(this);
     }
 
     private void found(Stage st, ConstraintFamily f) {

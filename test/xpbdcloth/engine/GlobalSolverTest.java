@@ -46,7 +46,7 @@ class GlobalSolverTest {
             Particles p = c.particles();
             for (int i = 0; i < p.count(); i++) if (!p.isPinned(i)) p.setPosition(i, p.x(i) + 0.01 * Math.sin(i), p.y(i) - 0.02 * Math.cos(3 * i), 0.015 * Math.sin(7 * i));
             Constraint[] cs = c.constraints().toArray(new Constraint[0]);
-            GlobalSolver g = new GlobalSolver(cs, p.count(), multigrid, 1e-13, 10_000);
+            GlobalSolver g = new GlobalSolver(ConstraintRows.of(cs), p.count(), multigrid, 1e-13, 10_000);
             SolverContext ctx = new SolverContext();
             ctx.load(new SolverSettings().mode(ConstraintMode.XPBD), 1 / 60.0);
             double[][][] sys = g.linearSystemForTest(p, ctx);

@@ -35,7 +35,7 @@ class MultigridOnTriangleMeshesTest {
     }
 
     static GlobalSolver solver(Cloth c, boolean multigrid, double tolerance, int maxIterations) {
-        return new GlobalSolver(c.constraints().toArray(new Constraint[0]), c.particles().count(), multigrid, tolerance, maxIterations);
+        return new GlobalSolver(ConstraintRows.of(c.constraints().toArray(new Constraint[0])), c.particles().count(), multigrid, tolerance, maxIterations);
     }
 
     static SolverContext context() {
