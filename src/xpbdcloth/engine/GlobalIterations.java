@@ -47,27 +47,20 @@ final class GlobalIterations implements SolveStage {
 
     GlobalSolver global() { return global; }
 
-    @Override public void solve(int substep, int iterations) {
+    @Override public void solve(int substep, int iterations, StepProbe probe) {
         for (int it = 0; it < iterations; it++) {
-            local.sweep(particles, ctx);
-            global.iterate(particles, ctx);
-            (contacts.count() > 0 ? all : rest).sweep();
+            SequentialSweeps after = contacts.count() > 0 ? all : rest;
+            if (probe == null) {
+                local.sweep(particles, ctx);
+                global.iterate(particles, ctx);
+                after.sweep();
+            } else {
+                local.sweep(particles, ctx, probe);
+                global.iterate(particles, ctx);
+                global.check(probe);
+                after.sweep(probe);
+            }
             listener.afterSweep(substep, it);
         }
-    }
-
-    @Override public SolveStage probed(StepProbe probe) {
-        return new SolveStage() {
-            @Override public void solve(int substep, int iterations) {
-                for (int it = 0; it < iterations; it++) {
-                    local.sweep(particles, ctx, probe);
-                    global.iterate(particles, ctx);
-                    probe.check(global);
-                    (contacts.count() > 0 ? all : rest).sweep(probe);
-                }
-            }
-
-            @Override public SolveStage probed(StepProbe p) { return this; }
-        };
     }
 }

@@ -25,7 +25,11 @@ final class ParallelColouredSweeps implements SolveStage, Team.Job {
         this.sameResult = sameResult;
     }
 
-    @Override public void solve(int substep, int iterations) {
+    @Override public void solve(int substep, int iterations, StepProbe probe) {
+        if (probe != null) { // replayed on one thread: the same result, and a probe is not thread-safe
+            sameResult.solve(substep, iterations, probe);
+            return;
+        }
         this.iterations = iterations;
         team.run(this);
     }
@@ -47,7 +51,4 @@ final class ParallelColouredSweeps implements SolveStage, Team.Job {
             }
         }
     }
-
-    /** Replayed on one thread: the same result, and a probe is not thread-safe. */
-    @Override public SolveStage probed(StepProbe probe) { return sameResult.probed(probe); }
 }

@@ -19,9 +19,10 @@ final class SequentialSweeps implements SolveStage {
         this.listener = listener;
     }
 
-    @Override public void solve(int substep, int iterations) {
+    @Override public void solve(int substep, int iterations, StepProbe probe) {
         for (int it = 0; it < iterations; it++) {
-            sweep();
+            if (probe == null) sweep();
+            else sweep(probe);
             listener.afterSweep(substep, it);
         }
     }
@@ -39,15 +40,5 @@ final class SequentialSweeps implements SolveStage {
             contacts.project(particles, ctx, k);
             probe.check(contacts.particle(k), ConstraintFamily.COLLISION);
         }
-    }
-
-    @Override public SolveStage probed(StepProbe probe) {
-        return new SolveStage() {
-            @Override public void solve(int substep, int iterations) {
-                for (int it = 0; it < iterations; it++) sweep(probe);
-            }
-
-            @Override public SolveStage probed(StepProbe p) { return this; }
-        };
     }
 }

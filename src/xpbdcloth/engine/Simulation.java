@@ -183,7 +183,7 @@ public final class Simulation {
         Check.positive("dt", dt);
         snapshot.save(particles, spheres, time, stepCount);
         try {
-            run(dt, StepObserver.NONE, stages.stage(sweepListener));
+            run(dt, null);
         } catch (RuntimeException failed) {
             // Whatever a stage throws, half a step is not a state: put the one before it back.
             restoreSnapshot();
@@ -193,10 +193,12 @@ public final class Simulation {
     }
 
     /**
-     * The stages of one step (see {@link Stage}), each a call. The observer hears the end of every stage
-     * (a no-op but when replaying a step that diverged, whose solve stage then checks every projection).
+     * The stages of one step (see {@link Stage}), each a call. A probe, when replaying a step that diverged,
+     * hears the end of every stage and the solve checks every projection; null otherwise.
      */
-    private void run(double dt, StepObserver observer, SolveStage solveStage) {
+    private void run(double dt, StepProbe probe) {
+        final StepObserver observer = probe == null ? StepObserver.NONE : probe;
+        final SolveStage solveStage = stages.stage(sweepListener);
         final int substeps = settings.substeps(), iterations = settings.iterations();
         final double h = dt / substeps;
         final AttachmentBlock attachments = constraints.attachments();
@@ -226,7 +228,7 @@ public final class Simulation {
             attachments.beginSubstep(ctx);
             sweepListener.afterSweep(s, -1);
             long s0 = System.nanoTime();
-            solveStage.solve(s, iterations);
+            solveStage.solve(s, iterations, probe);
             solveNanos += System.nanoTime() - s0;
             observer.after(Stage.SOLVE);
             Integrator.updateVelocities(particles, h);
@@ -248,7 +250,7 @@ public final class Simulation {
         restoreSnapshot();
         StepProbe probe = new StepProbe(particles);
         try {
-            run(dt, probe, stages.stage(sweepListener).probed(probe));
+            run(dt, probe);
         } catch (StepProbe.Found found) {
             // the probe has recorded where
         }

@@ -10,12 +10,11 @@ package xpbdcloth.engine;
  * never by branches inside the substep loop.
  */
 interface SolveStage {
-    /** The substep's solve; the listener hears every sweep. */
-    void solve(int substep, int iterations);
-
     /**
-     * The same computation, checking the state after every projection: used only to replay a step that
-     * produced a non-finite number, to find the first constraint family that did.
+     * The substep's solve; the listener hears every sweep. With a probe (only when replaying a step that
+     * produced a non-finite number) the same computation, on one thread, checks the state after every
+     * projection to find the first constraint family that did; null otherwise. One loop serves both, so
+     * the replay cannot drift from the step it replays.
      */
-    SolveStage probed(StepProbe probe);
+    void solve(int substep, int iterations, StepProbe probe);
 }

@@ -34,11 +34,6 @@ final class StepProbe implements StepObserver {
             if (!Double.isFinite(particles.x[k])) found(Stage.SOLVE, f);
     }
 
-    /** After a global iteration: the first body constraint on a non-finite particle names the family. */
-    void check(GlobalSolver g) {
-        g.check(this);
-    }
-
     private void found(Stage st, ConstraintFamily f) {
         stage = st;
         family = f;

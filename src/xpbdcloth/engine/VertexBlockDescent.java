@@ -423,10 +423,10 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
             for (int i = 0; i < b.count(); i++) if (b.compliance(i) > 0) restHasEnergy = true;
     }
 
-    @Override public void solve(int substep, int iterations) {
+    @Override public void solve(int substep, int iterations, StepProbe probe) {
         begin(substep);
         this.iterations = iterations;
-        if (team != null) {
+        if (team != null && probe == null) {
             team.run(this);
             withoutEnergyGain();
             return;
@@ -434,8 +434,17 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
         if (bounded) budgetAndStart(0, 1);
         listener.afterSweep(substep, -1);
         for (int it = 0; it < iterations; it++) {
-            for (int c = 0, nc = colours(); c < nc; c++) solveColour(c, 0, 1);
-            rest.sweep(particles, ctx);
+            if (probe == null) {
+                for (int c = 0, nc = colours(); c < nc; c++) solveColour(c, 0, 1);
+                rest.sweep(particles, ctx);
+            } else {
+                // The colours' order, one particle at a time (its step moves it alone, with its contacts and pins).
+                for (int k = 0; k < n; k++) {
+                    solveParticle(order[k], inverseH2);
+                    probe.check(order[k], firstFamily);
+                }
+                rest.sweep(particles, ctx, probe);
+            }
             listener.afterSweep(substep, it);
         }
         if (bounded) sumEndEnergy(0, 1);
@@ -918,30 +927,5 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
             final Collider with = contacts.with(k);
             if (!(with instanceof SelfCollision)) contacts.projectOne(particles, k, v, ctx.h);
         }
-    }
-
-    /** The same solve, the state checked after every particle's step (which then names the energies' first family). */
-    @Override public SolveStage probed(StepProbe probe) {
-        return new SolveStage() {
-            @Override public void solve(int substep, int iterations) {
-                begin(substep);
-                if (bounded) budgetAndStart(0, 1);
-                for (int it = 0; it < iterations; it++) {
-                    for (int k = 0; k < n; k++) {
-                        solveParticle(order[k], inverseH2);
-                        probe.check(order[k], firstFamily);
-                    }
-                    rest.sweep(particles, ctx, probe);
-                    for (int k = 0; k < contacts.count(); k++) {
-                        contacts.project(particles, ctx, k);
-                        probe.check(contacts.particle(k), ConstraintFamily.COLLISION);
-                    }
-                }
-                if (bounded) sumEndEnergy(0, 1);
-                withoutEnergyGain();
-            }
-
-            @Override public SolveStage probed(StepProbe p) { return this; }
-        };
     }
 }

@@ -76,9 +76,17 @@ class NeverNaNTest {
         for (int k = 0; k < before.length; k++) assertArrayEquals(before[k], after[k], 0.0, "state array " + k + " restored bit for bit");
     }
 
-    @Test
-    void aStepThatGoesNonFiniteInTheSolveIsUndoneAndNamesItsFamily() {
+    /**
+     * Whichever solve stage runs the step (Gauss–Seidel in order, coloured on two threads, a global solver,
+     * vertex block descent), its replay is the same loop with the probe, and finds the same culprit.
+     */
+    @org.junit.jupiter.params.ParameterizedTest
+    @org.junit.jupiter.params.provider.ValueSource(strings = {"gauss-seidel", "coloured-2-threads", "jacobi-pcg", "vertex-block-descent"})
+    void aStepThatGoesNonFiniteInTheSolveIsUndoneAndNamesItsFamily(String solve) {
         SolverSettings s = new SolverSettings().substeps(3);
+        if (solve.equals("coloured-2-threads")) s.order(ConstraintOrder.COLOURED).threads(2);
+        if (solve.equals("jacobi-pcg")) s.solver(SolverType.JACOBI_PCG);
+        if (solve.equals("vertex-block-descent")) s.solver(SolverType.VERTEX_BLOCK_DESCENT);
         Simulation sim = hangingCloth(s);
         Poison poison = new Poison(20, 7);
         poison.sim = sim;
