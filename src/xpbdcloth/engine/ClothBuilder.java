@@ -29,12 +29,8 @@ public final class ClothBuilder {
     private Plane plane = Plane.VERTICAL;
     private double arealDensity = 0.1;
     private double totalMass = Double.NaN;
-    private final Map<ConstraintFamily, double[]> families = new EnumMap<>(ConstraintFamily.class);
+    private final Map<ConstraintFamily, Material> families = new EnumMap<>(ConstraintFamily.class);
     private final List<int[]> pins = new ArrayList<>();
-
-    public ClothBuilder() {
-        family(ConstraintFamily.STRUCTURAL, 1.0, 0.0);
-    }
 
     /** Particle counts along the width (columns ≥ 1) and the height (rows ≥ 2), at least 2 particles. */
     public ClothBuilder resolution(int columns, int rows) {
@@ -84,12 +80,18 @@ public final class ClothBuilder {
 
     /** Includes a family with PBD stiffness k ∈ [0,1] and XPBD compliance α ≥ 0 (m/N). */
     public ClothBuilder family(ConstraintFamily family, double stiffness, double compliance) {
-        families.put(family, MeshClothBuilder.material(family, stiffness, compliance));
+        return family(family, new Material(stiffness, compliance));
+    }
+
+    /** Includes a family of the given material; the cloth has exactly the families it is given (none: no constraints). */
+    public ClothBuilder family(ConstraintFamily family, Material m) {
+        families.put(MeshClothBuilder.checkedFamily(family), java.util.Objects.requireNonNull(m, "material must not be null"));
         return this;
     }
 
-    public ClothBuilder withoutFamily(ConstraintFamily family) {
-        families.remove(family);
+    /** Includes every family of the map with its material. */
+    public ClothBuilder families(Map<ConstraintFamily, Material> materials) {
+        materials.forEach(this::family);
         return this;
     }
 
@@ -113,8 +115,7 @@ public final class ClothBuilder {
         }
         if (Double.isNaN(totalMass) && area() == 0)
             throw new IllegalArgumentException("arealDensity needs a cloth of non-zero area (use totalMass for a zero-area cloth), area was 0.0");
-        MeshClothBuilder b = new MeshClothBuilder(mesh()).masses(masses()).withoutFamily(ConstraintFamily.STRUCTURAL);
-        families.forEach((family, kAlpha) -> b.family(family, kAlpha[0], kAlpha[1]));
+        MeshClothBuilder b = new MeshClothBuilder(mesh()).masses(masses()).families(families);
         for (int[] pin : pins) b.pin(pin[0] * columns + (pin[1] < 0 ? columns + pin[1] : pin[1]));
         return b.build(columns, rows);
     }

@@ -73,16 +73,26 @@ public abstract class ConstraintBlock {
     public final double stiffnessPerSweep(int i) { return stiffnessPerSweepOf == null ? stiffnessPerSweep : stiffnessPerSweepOf[i]; }
 
     /** PBD stiffness k ∈ [0, 1] for every constraint of the block. */
-    public final void setStiffness(double k) {
-        stiffness = Check.inRange("stiffness", k, 0, 1);
+    public final void setStiffness(double k) { applyStiffness(Check.inRange("stiffness", k, 0, 1)); }
+
+    /** k and α for every constraint of the block, as one value (checked when it was made). */
+    public final void setMaterial(Material m) {
+        applyStiffness(m.stiffness);
+        applyCompliance(m.compliance);
+    }
+
+    private void applyStiffness(double k) {
+        stiffness = k;
         stiffnessOf = null;
         stiffnessPerSweepOf = null;
         preparedRevision = -1;
     }
 
     /** XPBD compliance α ≥ 0 (m/N) for every constraint of the block. */
-    public final void setCompliance(double alpha) {
-        compliance = Check.inRange("compliance", alpha, 0, EngineRange.MAX_COMPLIANCE);
+    public final void setCompliance(double alpha) { applyCompliance(Check.inRange("compliance", alpha, 0, EngineRange.MAX_COMPLIANCE)); }
+
+    private void applyCompliance(double alpha) {
+        compliance = alpha;
         complianceOf = null;
         materialChanged();
     }

@@ -134,6 +134,10 @@ final class ConstraintSet {
         for (ConstraintBlock b : cloth) if (b.family() == family) b.setStiffness(k);
     }
 
+    void setMaterial(ConstraintFamily family, Material m) {
+        for (ConstraintBlock b : cloth) if (b.family() == family) b.setMaterial(m);
+    }
+
     void setCompliance(ConstraintFamily family, double alpha) {
         Check.nonNegative("compliance", alpha);
         Check.inRange("compliance", alpha, 0, EngineRange.MAX_COMPLIANCE);

@@ -27,14 +27,13 @@ public final class MeshClothBuilder {
     private double arealDensity = 0.1;
     private double totalMass = Double.NaN;
     private double[] masses;
-    private final Map<ConstraintFamily, double[]> families = new EnumMap<>(ConstraintFamily.class);
+    private final Map<ConstraintFamily, Material> families = new EnumMap<>(ConstraintFamily.class);
     private final List<Integer> pins = new ArrayList<>();
 
     public MeshClothBuilder(ClothMesh mesh) {
         if (mesh == null) throw new IllegalArgumentException("mesh must not be null, was null");
         if (mesh.vertexCount() < 2) throw new IllegalArgumentException("mesh must have at least 2 vertices, was " + mesh.vertexCount());
         this.mesh = mesh;
-        family(ConstraintFamily.STRUCTURAL, 1.0, 0.0);
     }
 
     /** kg/m², &gt; 0, lumped to the vertices by face area. Replaces a total mass or given masses. */
@@ -63,21 +62,28 @@ public final class MeshClothBuilder {
 
     /** Includes a family with PBD stiffness k ∈ [0,1] and XPBD compliance α ≥ 0 (m/N). */
     public MeshClothBuilder family(ConstraintFamily family, double stiffness, double compliance) {
-        families.put(family, material(family, stiffness, compliance));
+        return family(family, new Material(stiffness, compliance));
+    }
+
+    /**
+     * Includes a family of the given material. The cloth has exactly the families it is given: none given,
+     * it is particles without constraints.
+     */
+    public MeshClothBuilder family(ConstraintFamily family, Material m) {
+        families.put(checkedFamily(family), java.util.Objects.requireNonNull(m, "material must not be null"));
         return this;
     }
 
-    static double[] material(ConstraintFamily family, double stiffness, double compliance) {
+    /** Includes every family of the map with its material (a preset's families, or another builder's). */
+    public MeshClothBuilder families(Map<ConstraintFamily, Material> materials) {
+        materials.forEach(this::family);
+        return this;
+    }
+
+    static ConstraintFamily checkedFamily(ConstraintFamily family) {
         if (family == null || family == ConstraintFamily.COLLISION || family == ConstraintFamily.ATTACHMENT)
             throw new IllegalArgumentException("family must be STRUCTURAL, SHEAR or BEND, was " + family);
-        Check.inRange("stiffness", stiffness, 0, 1);
-        Check.nonNegative("compliance", compliance);
-        return new double[] {stiffness, compliance};
-    }
-
-    public MeshClothBuilder withoutFamily(ConstraintFamily family) {
-        families.remove(family);
-        return this;
+        return family;
     }
 
     /** Pins vertices by index; checked at once. */
@@ -101,19 +107,19 @@ public final class MeshClothBuilder {
 
         MeshTopology topology = MeshTopology.of(mesh);
         List<ConstraintBlock> blocks = new ArrayList<>();
-        double[] structural = families.get(ConstraintFamily.STRUCTURAL);
+        Material structural = families.get(ConstraintFamily.STRUCTURAL);
         if (structural != null) {
             int[] e = topology.edges();
             DistanceBlock b = tuned(new DistanceBlock(ConstraintFamily.STRUCTURAL, e.length / 2), structural, blocks);
             for (int k = 0; k < e.length; k += 2) b.addAtCurrentLength(p, e[k], e[k + 1]);
         }
-        double[] shear = families.get(ConstraintFamily.SHEAR);
+        Material shear = families.get(ConstraintFamily.SHEAR);
         if (shear != null) {
             int[] c = topology.corners();
             ShearBlock b = tuned(new ShearBlock(ConstraintFamily.SHEAR, c.length / 3), shear, blocks);
             for (int k = 0; k < c.length; k += 3) b.addAtCurrentAngle(p, c[k], c[k + 1], c[k + 2]);
         }
-        double[] bend = families.get(ConstraintFamily.BEND);
+        Material bend = families.get(ConstraintFamily.BEND);
         if (bend != null) {
             int[] r = topology.straightRuns();
             BendBlock b = tuned(new BendBlock(ConstraintFamily.BEND, r.length / 3), bend, blocks);
@@ -157,9 +163,8 @@ public final class MeshClothBuilder {
     }
 
     /** The block, given the family's k and α and added to the list. */
-    private static <B extends ConstraintBlock> B tuned(B block, double[] kAlpha, List<ConstraintBlock> blocks) {
-        block.setStiffness(kAlpha[0]);
-        block.setCompliance(kAlpha[1]);
+    private static <B extends ConstraintBlock> B tuned(B block, Material m, List<ConstraintBlock> blocks) {
+        block.setMaterial(m);
         blocks.add(block);
         return block;
     }

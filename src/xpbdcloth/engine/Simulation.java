@@ -161,6 +161,9 @@ public final class Simulation {
     /** Sets PBD stiffness k for every constraint of a family. */
     public void setStiffness(ConstraintFamily family, double k) { constraints.setStiffness(family, k); }
 
+    /** Sets k and α for every constraint of a family. */
+    public void setMaterial(ConstraintFamily family, Material m) { constraints.setMaterial(family, m); }
+
     /** Sets XPBD compliance α (m/N) for every constraint of a family. */
     public void setCompliance(ConstraintFamily family, double alpha) { constraints.setCompliance(family, alpha); }
 

@@ -39,7 +39,7 @@ final class MultigridOnTriangles implements Experiment {
         SquareSheet.Cells cells = kind.equals("diagonal") ? SquareSheet.Cells.DIAGONAL : kind.equals("alternating") ? SquareSheet.Cells.ALTERNATING : SquareSheet.Cells.QUADS;
         ClothMesh mesh = SquareSheet.generate(res, cells);
         Cloth cloth = new MeshClothBuilder(mesh).arealDensity(0.2)
-                .family(ConstraintFamily.STRUCTURAL, 1, COMPLIANCE).withoutFamily(ConstraintFamily.SHEAR).withoutFamily(ConstraintFamily.BEND)
+                .family(ConstraintFamily.STRUCTURAL, 1, COMPLIANCE)
                 .pin(mesh.group("edge")).build();
         double h = 1.0 / (res - 1);
         Particles p = cloth.particles();

@@ -52,7 +52,7 @@ public final class Rigs {
 
     /** A res×res vertical cloth of size × size m, 0.2 kg/m², structural edges only, pinned at its two top corners. */
     public static Cloth hangingCloth(int res, double size) {
-        return new ClothBuilder().resolution(res, res).size(size, size).arealDensity(0.2).pinTopCorners().build();
+        return new ClothBuilder().family(ConstraintFamily.STRUCTURAL, 1, 0).resolution(res, res).size(size, size).arealDensity(0.2).pinTopCorners().build();
     }
 
     public static Simulation hangingCloth(int res, double size, Solver s) {

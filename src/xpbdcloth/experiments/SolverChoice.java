@@ -38,8 +38,7 @@ final class SolverChoice implements Experiment {
     /** Sag (m), largest strain, balance and ms per step (the last 200 of 400 steps, one thread). */
     static double[] settle(SolverType solver, int iterations, int substeps, int segments) {
         int n = segments + 1;
-        Cloth cloth = new ClothBuilder().resolution(n, n).size(1, 1).origin(0, 2, 0).arealDensity(0.324).pinTopCorners()
-                .withoutFamily(ConstraintFamily.STRUCTURAL).build();
+        Cloth cloth = new ClothBuilder().resolution(n, n).size(1, 1).origin(0, 2, 0).arealDensity(0.324).pinTopCorners().build();
         Particles p = cloth.particles();
         Simulation sim = cloth.simulation(new SolverSettings().mode(ConstraintMode.XPBD).solver(solver).iterations(iterations).substeps(substeps)
                 .timestep(0.02).gravity(0, -9.81, 0).damping(2));

@@ -7,6 +7,7 @@ import java.util.Map;
 import xpbdcloth.engine.ClothBuilder;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.ConstraintMode;
+import xpbdcloth.engine.Material;
 import xpbdcloth.mesh.ClothMesh;
 
 /**
@@ -153,16 +154,6 @@ public final class Preset {
 
         /** The particle a pin motion names: (row, col) on a grid. */
         int vertex(int row, int col) { return row * columns + col; }
-    }
-
-    /** PBD stiffness k ∈ [0,1] and XPBD compliance α ≥ 0 of one family. */
-    public static final class Material {
-        public final double stiffness, compliance;
-
-        Material(double stiffness, double compliance) {
-            this.stiffness = stiffness;
-            this.compliance = compliance;
-        }
     }
 
     public static final class Solver {

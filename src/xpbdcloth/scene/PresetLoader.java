@@ -21,6 +21,7 @@ import java.util.TreeSet;
 import xpbdcloth.engine.ClothBuilder;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.ConstraintMode;
+import xpbdcloth.engine.Material;
 import xpbdcloth.engine.OrthotropicMaterial;
 import xpbdcloth.fabric.DataDrivenSample;
 import xpbdcloth.fabric.Fabric;
@@ -334,7 +335,7 @@ public final class PresetLoader {
             Preset.FabricSpec fabric = fn == null ? null : part(() -> fabric(fn));
             Preset.Cloth cloth = fn != null && fabric == null ? null : part(() -> cloth(required(root, "cloth"), fabric));
             Node fs = fn == null ? part(() -> required(root, "families")) : optional(root, "families");
-            Map<ConstraintFamily, Preset.Material> families = fs == null ? (fn == null ? null : new EnumMap<>(ConstraintFamily.class)) : part(() -> families(fs));
+            Map<ConstraintFamily, Material> families = fs == null ? (fn == null ? null : new EnumMap<>(ConstraintFamily.class)) : part(() -> families(fs));
             Preset.Solver solver = part(() -> solver(required(root, "solver")));
             if (cloth == null || families == null || solver == null) return null;
             return part(() -> rest(root, name, description, fabric, cloth, families, solver));
@@ -342,7 +343,7 @@ public final class PresetLoader {
 
         /** The parts that need the cloth and the solver: the colliders, self-collision, pin motions, wind and aerodynamics. */
         private Preset rest(Node root, String name, String description, Preset.FabricSpec fabric, Preset.Cloth cloth,
-                            Map<ConstraintFamily, Preset.Material> families, Preset.Solver solver) {
+                            Map<ConstraintFamily, Material> families, Preset.Solver solver) {
             if (fabric != null && fabric.warp == null) {
                 if (!cloth.isMesh())
                     throw fail("fabric.warp", "is missing, and a grid cloth has no texture coordinates to take it from: give the warp direction, e.g. [1, 0, 0]");
@@ -604,9 +605,9 @@ public final class PresetLoader {
                     vector(required(n, "air"), Limits.SPEED));
         }
 
-        Map<ConstraintFamily, Preset.Material> families(Node n) {
+        Map<ConstraintFamily, Material> families(Node n) {
             object(n, Set.of("structural", "shear", "bend"));
-            Map<ConstraintFamily, Preset.Material> out = new EnumMap<>(ConstraintFamily.class);
+            Map<ConstraintFamily, Material> out = new EnumMap<>(ConstraintFamily.class);
             out.put(ConstraintFamily.STRUCTURAL, material(required(n, "structural")));
             Node s = optional(n, "shear");
             if (s != null) out.put(ConstraintFamily.SHEAR, material(s));
@@ -615,9 +616,9 @@ public final class PresetLoader {
             return out;
         }
 
-        Preset.Material material(Node n) {
+        Material material(Node n) {
             object(n, Set.of("stiffness", "compliance"));
-            return new Preset.Material(number(required(n, "stiffness"), Limits.STIFFNESS), number(required(n, "compliance"), Limits.COMPLIANCE));
+            return new Material(number(required(n, "stiffness"), Limits.STIFFNESS), number(required(n, "compliance"), Limits.COMPLIANCE));
         }
 
         Preset.Solver solver(Node n) {

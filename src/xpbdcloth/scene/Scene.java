@@ -111,20 +111,18 @@ public final class Scene {
     private static Cloth gridCloth(Preset preset) {
         Preset.Cloth c = preset.cloth;
         ClothBuilder b = new ClothBuilder().resolution(c.columns, c.rows).size(c.width, c.height).plane(c.plane)
-                .origin(c.origin[0], c.origin[1], c.origin[2]).withoutFamily(ConstraintFamily.STRUCTURAL);
+                .origin(c.origin[0], c.origin[1], c.origin[2]).families(preset.families);
         if (Double.isNaN(c.totalMass)) b.arealDensity(c.arealDensity);
         else b.totalMass(c.totalMass);
-        preset.families.forEach((family, m) -> b.family(family, m.stiffness, m.compliance));
         for (int[] pin : c.pins) b.pin(pin[0], pin[1]);
         return b.build();
     }
 
     private static Cloth meshCloth(Preset preset) {
         Preset.Cloth c = preset.cloth;
-        MeshClothBuilder b = new MeshClothBuilder(c.mesh).withoutFamily(ConstraintFamily.STRUCTURAL);
+        MeshClothBuilder b = new MeshClothBuilder(c.mesh).families(preset.families);
         if (Double.isNaN(c.totalMass)) b.arealDensity(c.arealDensity);
         else b.totalMass(c.totalMass);
-        preset.families.forEach((family, m) -> b.family(family, m.stiffness, m.compliance));
         b.pin(c.pinnedVertices);
         return b.build();
     }

@@ -4,6 +4,7 @@ import java.util.List;
 import java.util.Locale;
 import processing.core.PConstants;
 import processing.core.PGraphics;
+import xpbdcloth.engine.Material;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.Metrics;
 import xpbdcloth.engine.Simulation;
@@ -76,7 +77,7 @@ final class Hud {
         List<Scene> running = s.running();
         Simulation sim = running.get(0).simulation();
         ConstraintFamily fam = s.shownFamily();
-        double[] km = s.material(fam);
+        Material km = s.material(fam);
         String famName = s.family() == null ? "all (showing " + fam.name().toLowerCase(Locale.ROOT) + ")" : fam.name().toLowerCase(Locale.ROOT);
         Fabric fabric = s.fabric();
         boolean tethered = s.preset().fabric != null && s.preset().fabric.tethers;
@@ -91,10 +92,10 @@ final class Hud {
                         tethered ? ", tethered" : "") : fmt("family %s", famName),
                 km == null ? (fabric == null ? "" : fmt("  membrane warp %.0f N/m  weft %.0f N/m  ν12 %.2f  shear %.0f N/m", fabric.membrane.warpModulus,
                         fabric.membrane.weftModulus, fabric.membrane.poisson, fabric.membrane.shearModulus))
-                        : fmt("  PBD  k %.2f  →  k' %.4f %s", km[0], kPrime(s, km[0]), s.mullerCorrection() ? "(Müller, n=" + s.iterations() + ")" : "(raw k)"),
+                        : fmt("  PBD  k %.2f  →  k' %.4f %s", km.stiffness, kPrime(s, km.stiffness), s.mullerCorrection() ? "(Müller, n=" + s.iterations() + ")" : "(raw k)"),
                 km == null ? (fabric == null ? "" : fmt("  bending %.1e N·m, the plate's on every triangle%s", fabric.bendingStiffness,
                         Double.isNaN(fabric.arealDensity) ? "" : fmt("   %.0f g/m²", 1000 * fabric.arealDensity)))
-                        : fmt("  XPBD α %.2e m/N  →  1/α %s", km[1], km[1] == 0 ? "infinite (hard)" : fmt("%.2e N/m", 1 / km[1])),
+                        : fmt("  XPBD α %.2e m/N  →  1/α %s", km.compliance, km.compliance == 0 ? "infinite (hard)" : fmt("%.2e N/m", 1 / km.compliance)),
                 recording ? fmt("recording: %.4g frames per simulated second (wall-clock timings not drawn)", 1 / (xpbdcloth.scene.ObjExport.stepsPerFrame(s.dt()) * s.dt()))
                         : fmt("step %.1f ms for %.0f ms of motion (%s)   render %.1f ms   %.0f fps   %.1f kB allocated/frame", simMs, 1000 * s.dt(),
                         realTime(simMs, 1000 * s.dt(), slowMotion), renderMs, fps, bytesPerFrame / 1024),
@@ -185,11 +186,11 @@ final class Hud {
 
     /** The side-by-side labels: each cloth's material and its strain. */
     private static String[] labels(SketchState s, List<Scene> running) {
-        double[] km = s.material(s.shownFamily());
+        Material km = s.material(s.shownFamily());
         String[] out = new String[2];
         for (int i = 0; i < 2; i++) {
             Simulation si = running.get(i).simulation();
-            out[i] = (i == 0 ? "left: PBD  k " + fmt("%.2f", km[0]) : "right: XPBD  α " + fmt("%.1e", km[1]))
+            out[i] = (i == 0 ? "left: PBD  k " + fmt("%.2f", km.stiffness) : "right: XPBD  α " + fmt("%.1e", km.compliance))
                     + fmt("   strain mean %.2f %%  max %.2f %%", 100 * Metrics.meanClothStrain(si), 100 * Metrics.maxClothStrain(si));
         }
         return out;

@@ -1,9 +1,9 @@
 package xpbdcloth.sketch;
 
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.Collections;
 import java.util.List;
+import xpbdcloth.engine.Material;
 import xpbdcloth.engine.ConstraintFamily;
 
 /**
@@ -32,7 +32,7 @@ public final class KeyBindings {
     private static Object material(SketchState s) {
         List<Object> out = new ArrayList<>();
         for (ConstraintFamily f : new ConstraintFamily[] {ConstraintFamily.STRUCTURAL, ConstraintFamily.SHEAR, ConstraintFamily.BEND})
-            out.add(s.material(f) == null ? null : Arrays.toString(s.material(f)));
+            out.add(s.material(f) == null ? null : s.material(f).toString());
         return out;
     }
 

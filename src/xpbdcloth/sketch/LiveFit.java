@@ -3,6 +3,7 @@ package xpbdcloth.sketch;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import xpbdcloth.engine.Material;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.fit.StaticFit;
 import xpbdcloth.scene.Preset;
@@ -29,13 +30,13 @@ final class LiveFit {
     final History[] plotted = {rmsMm};
     boolean finished;
 
-    LiveFit(Preset preset, Map<ConstraintFamily, double[]> materials, double[] observed, String source) {
+    LiveFit(Preset preset, Map<ConstraintFamily, Material> materials, double[] observed, String source) {
         Scene copy = Scene.of(preset);
         List<ConstraintFamily> families = new ArrayList<>();
         for (ConstraintFamily f : SPRINGS)
             if (materials.containsKey(f)) {
                 families.add(f);
-                copy.simulation().setCompliance(f, materials.get(f)[1]);
+                copy.simulation().setMaterial(f, materials.get(f));
             }
         if (families.isEmpty()) throw new IllegalArgumentException("fit: this cloth has no spring families (structural, shear, bend) whose compliance a fit could find");
         this.fit = new StaticFit(copy.simulation(), families, observed, 1);

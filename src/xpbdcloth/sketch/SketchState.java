@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import java.util.EnumMap;
 import java.util.List;
 import java.util.Map;
+import xpbdcloth.engine.Material;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.ConstraintMode;
 import xpbdcloth.engine.Simulation;
@@ -53,7 +54,8 @@ public final class SketchState {
      * setters, copied into each scene (the side-by-side pair overrides only the mode).
      */
     private final SolverSettings shared = new SolverSettings();
-    private final Map<ConstraintFamily, double[]> materials = new EnumMap<>(ConstraintFamily.class);
+    /** The spring families' materials now: the preset's, as the keys and a fit have changed them (values, never edited in place). */
+    private final Map<ConstraintFamily, Material> materials = new EnumMap<>(ConstraintFamily.class);
     private int familyChoice;
 
     // Wind: on/off, direction angle about y (rad), speed (m/s).
@@ -85,7 +87,7 @@ public final class SketchState {
                 .substeps(p.solver.substeps).timestep(p.solver.dt).mullerCorrection(p.solver.mullerCorrection);
         fabric = p.fabric == null ? null : p.fabric.fabric;
         materials.clear();
-        p.families.forEach((f, m) -> materials.put(f, new double[] {m.stiffness, m.compliance}));
+        materials.putAll(p.families);
         windOn = p.wind != null;
         selfCollisionOn = p.selfCollision != null;
         double[] u = p.wind == null ? new double[] {2, 0, 1.5} : p.wind.velocity;
@@ -114,10 +116,7 @@ public final class SketchState {
             st.iterations(shared.iterations()).substeps(shared.substeps()).timestep(shared.timestep())
                     .mullerCorrection(shared.mullerCorrection()).threads(threads)
                     .solver(SolverType.GAUSS_SEIDEL).mode(m).solver(m == ConstraintMode.PBD ? SolverType.GAUSS_SEIDEL : shared.solver());
-            materials.forEach((f, km) -> {
-                s.simulation().setStiffness(f, km[0]);
-                s.simulation().setCompliance(f, km[1]);
-            });
+            materials.forEach(s.simulation()::setMaterial);
             if (fabric != null && s.fabric() != fabric) s.useFabric(fabric);
             s.setWind(windOn);
             boolean has = s.simulation().selfCollision() != null;
@@ -152,10 +151,7 @@ public final class SketchState {
     public ConstraintFamily family() { return FAMILY_CHOICES[familyChoice]; }
 
     /** k and α of a family, or null if the scene does not have it. */
-    public double[] material(ConstraintFamily f) {
-        double[] m = materials.get(f);
-        return m == null ? null : m.clone();
-    }
+    public Material material(ConstraintFamily f) { return materials.get(f); }
 
     /** The family shown in the HUD for material values: the chosen one, or structural for "all". */
     public ConstraintFamily shownFamily() {
@@ -248,28 +244,27 @@ public final class SketchState {
 
     /** PBD stiffness ± 0.05, clamped to [0, 1], for the chosen family or all. */
     public void changeStiffness(int direction) {
-        forChosen(km -> km[0] = Math.max(0, Math.min(1, Math.round((km[0] + direction * STIFFNESS_STEP) * 1000) / 1000.0)));
+        forChosen(m -> new Material(Math.max(0, Math.min(1, Math.round((m.stiffness + direction * STIFFNESS_STEP) * 1000) / 1000.0)), m.compliance));
     }
 
     /** XPBD compliance ×/÷ √10; below 1e-10 m/N it becomes 0 (hard), and up from 0 starts at 1e-10. */
     public void changeCompliance(int direction) {
-        forChosen(km -> {
-            double a = km[1];
+        forChosen(m -> {
+            double a = m.compliance;
             if (direction > 0) a = a == 0 ? MIN_COMPLIANCE : Math.min(MAX_COMPLIANCE, a * COMPLIANCE_FACTOR);
             else a = a / COMPLIANCE_FACTOR < MIN_COMPLIANCE ? 0 : a / COMPLIANCE_FACTOR;
-            km[1] = a;
+            return new Material(m.stiffness, a);
         });
     }
 
-    private void forChosen(java.util.function.Consumer<double[]> change) {
+    private void forChosen(java.util.function.UnaryOperator<Material> change) {
         if (materials.isEmpty()) {
             error("this cloth is a fabric (" + (fabric == null ? "no spring families" : fabric.name)
                     + "): k and α belong to spring families, and it has none; F changes its fabric");
             return;
         }
         ConstraintFamily f = family();
-        for (Map.Entry<ConstraintFamily, double[]> e : materials.entrySet())
-            if (f == null || e.getKey() == f) change.accept(e.getValue());
+        materials.replaceAll((family, m) -> f == null || family == f ? change.apply(m) : m);
         applyAll();
     }
 
@@ -364,7 +359,10 @@ public final class SketchState {
             return;
         }
         double[] alpha = fit.fit.compliance();
-        for (int f = 0; f < alpha.length; f++) materials.get(fit.fit.families().get(f))[1] = alpha[f];
+        for (int f = 0; f < alpha.length; f++) {
+            double fitted = alpha[f];
+            materials.computeIfPresent(fit.fit.families().get(f), (family, m) -> new Material(m.stiffness, fitted));
+        }
         applyAll();
         say(String.format(java.util.Locale.ROOT, "%s after %d iterations, RMS %.3f mm: the cloth now has %s",
                 fit.fit.converged() ? "fitted" : "fit not converged", fit.fit.last().index, 1e3 * fit.fit.last().rms, fitted()));
@@ -374,7 +372,7 @@ public final class SketchState {
         StringBuilder b = new StringBuilder();
         for (ConstraintFamily f : LiveFit.SPRINGS)
             if (materials.containsKey(f)) b.append(b.length() == 0 ? "" : ", ").append(f.name().toLowerCase(java.util.Locale.ROOT))
-                    .append(String.format(java.util.Locale.ROOT, " α %.3g", materials.get(f)[1]));
+                    .append(String.format(java.util.Locale.ROOT, " α %.3g", materials.get(f).compliance));
         return b.toString();
     }
 

@@ -78,7 +78,7 @@ public final class Bench {
      * kind (edges + one bending pair per interior edge).
      */
     static Simulation tenMinutePhysics(int n) {
-        Cloth cloth = new ClothBuilder().resolution(n, n).size(0.01 * (n - 1), 0.01 * (n - 1)).withoutFamily(ConstraintFamily.STRUCTURAL)
+        Cloth cloth = new ClothBuilder().resolution(n, n).size(0.01 * (n - 1), 0.01 * (n - 1))
                 .arealDensity(0.2).pinTopCorners().build();
         Particles p = cloth.particles();
         Simulation sim = new Simulation(p, new SolverSettings().mode(ConstraintMode.XPBD).iterations(1).substeps(15)
@@ -115,8 +115,7 @@ public final class Bench {
      * patches on every triangle and tethers to the two pinned corners, Gauss–Seidel 2 × 10 sweeps.
      */
     static Simulation fabric(int n) {
-        Cloth cloth = new ClothBuilder().resolution(n, n).size(1, 1).origin(0, 1.6, 0).arealDensity(0.2).pinTopCorners()
-                .withoutFamily(ConstraintFamily.STRUCTURAL).build();
+        Cloth cloth = new ClothBuilder().resolution(n, n).size(1, 1).origin(0, 1.6, 0).arealDensity(0.2).pinTopCorners().build();
         Simulation sim = cloth.simulation(new SolverSettings().mode(ConstraintMode.XPBD).iterations(2).substeps(10)
                 .timestep(0.02).order(ConstraintOrder.COLOURED));
         for (xpbdcloth.engine.ConstraintBlock b : xpbdcloth.fabric.FabricConstraints.build(cloth.particles(), cloth.triangles(), new double[] {1, 0, 0},
@@ -126,8 +125,7 @@ public final class Bench {
 
     /** The same fabric solved by vertex block descent, 2 × 10, without tethers (it needs none to hold the material). */
     static Simulation fabricDescent(int n) {
-        Cloth cloth = new ClothBuilder().resolution(n, n).size(1, 1).origin(0, 1.6, 0).arealDensity(0.2).pinTopCorners()
-                .withoutFamily(ConstraintFamily.STRUCTURAL).build();
+        Cloth cloth = new ClothBuilder().resolution(n, n).size(1, 1).origin(0, 1.6, 0).arealDensity(0.2).pinTopCorners().build();
         Simulation sim = cloth.simulation(new SolverSettings().mode(ConstraintMode.XPBD).solver(SolverType.VERTEX_BLOCK_DESCENT).iterations(2).substeps(10)
                 .timestep(0.02));
         for (xpbdcloth.engine.ConstraintBlock b : xpbdcloth.fabric.FabricConstraints.build(cloth.particles(), cloth.triangles(), new double[] {1, 0, 0},

@@ -47,7 +47,7 @@ class GridAsMeshTest {
     }
 
     static ClothBuilder allFamilies(int columns, int rows) {
-        return new ClothBuilder().resolution(columns, rows).size(0.7, 0.5).arealDensity(0.2)
+        return new ClothBuilder().family(ConstraintFamily.STRUCTURAL, 1, 0).resolution(columns, rows).size(0.7, 0.5).arealDensity(0.2)
                 .family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2);
     }
 
@@ -69,7 +69,7 @@ class GridAsMeshTest {
         ClothBuilder grid = allFamilies(9, 7);
         Cloth direct = grid.build();
         ClothMesh mesh = grid.mesh();
-        Cloth viaMesh = new MeshClothBuilder(mesh).arealDensity(0.2)
+        Cloth viaMesh = new MeshClothBuilder(mesh).family(ConstraintFamily.STRUCTURAL, 1, 0).arealDensity(0.2)
                 .family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2).build();
         assertEquals(describe(direct), describe(viaMesh));
         for (int k = 0; k < direct.constraints().size(); k++) {
@@ -91,7 +91,7 @@ class GridAsMeshTest {
     void ropeIsAPolyline() {
         double[] x = new double[3 * 5];
         for (int i = 0; i < 5; i++) x[3 * i + 1] = -0.1 * i;
-        Cloth rope = new MeshClothBuilder(ClothMesh.polyline(x)).totalMass(0.4).family(ConstraintFamily.BEND, 1, 0).pin(0).build();
+        Cloth rope = new MeshClothBuilder(ClothMesh.polyline(x)).family(ConstraintFamily.STRUCTURAL, 1, 0).totalMass(0.4).family(ConstraintFamily.BEND, 1, 0).pin(0).build();
         assertEquals(List.of("STRUCTURAL 0 1", "STRUCTURAL 1 2", "STRUCTURAL 2 3", "STRUCTURAL 3 4", "BEND 0 1 2", "BEND 1 2 3", "BEND 2 3 4"), describe(rope));
         assertEquals(0.05, rope.particles().mass(0), 1e-15, "an end stands for half a link");
         assertEquals(0.1, rope.particles().mass(2), 1e-15);
@@ -99,7 +99,7 @@ class GridAsMeshTest {
         assertFalse(rope.isGrid());
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> rope.index(0, 0));
         assertTrue(e.getMessage().startsWith("row and col address a grid cloth"), e.getMessage());
-        IllegalArgumentException d = assertThrows(IllegalArgumentException.class, () -> new MeshClothBuilder(ClothMesh.polyline(x)).arealDensity(0.2).build());
+        IllegalArgumentException d = assertThrows(IllegalArgumentException.class, () -> new MeshClothBuilder(ClothMesh.polyline(x)).family(ConstraintFamily.STRUCTURAL, 1, 0).arealDensity(0.2).build());
         assertTrue(d.getMessage().startsWith("arealDensity needs a mesh of non-zero area"), d.getMessage());
     }
 }

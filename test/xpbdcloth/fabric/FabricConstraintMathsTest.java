@@ -25,7 +25,7 @@ class FabricConstraintMathsTest {
     static final OrthotropicMaterial FABRIC = MembraneElasticityTest.FABRIC;
 
     static Cloth sheet(int n, double size) {
-        return new ClothBuilder().resolution(n, n).size(size, size).arealDensity(0.2).withoutFamily(ConstraintFamily.STRUCTURAL).build();
+        return new ClothBuilder().resolution(n, n).size(size, size).arealDensity(0.2).build();
     }
 
     /** ½ Σ C²/α over a block: the energy XPBD's equilibrium minimises (J). */

@@ -22,7 +22,7 @@ class LiveFitTest {
         Observation.write(obj, drape, RestShape.of(drape).positions, "test");
         SketchState s = new SketchState(PresetLoader.builtIn("drape"));
         KeyBindings.forKey('a').press(s); // every family √10 softer: the fit starts from there
-        assertEquals(1e-4 * Math.sqrt(10), s.material(ConstraintFamily.STRUCTURAL)[1], 1e-12);
+        assertEquals(1e-4 * Math.sqrt(10), s.material(ConstraintFamily.STRUCTURAL).compliance, 1e-12);
         var running = s.first();
         assertTrue(s.startFit(obj), s.message());
         assertNotNull(s.fit(), "the ghost and the HUD line need the fit");
@@ -33,7 +33,7 @@ class LiveFitTest {
         assertSame(running, s.first(), "no reset: the running cloth takes the α");
         double[] truth = {1e-4, 2e-1, 5e-2};
         for (int f = 0; f < 3; f++) {
-            assertEquals(truth[f], s.material(SPRINGS[f])[1], 1e-6 * truth[f], SPRINGS[f] + " α in the sketch");
+            assertEquals(truth[f], s.material(SPRINGS[f]).compliance, 1e-6 * truth[f], SPRINGS[f] + " α in the sketch");
             ConstraintFamily family = SPRINGS[f];
             assertEquals(truth[f], running.blocks().stream().filter(b -> b.family() == family).findFirst().get().compliance(0), 1e-6 * truth[f], "and in its simulation");
         }
