@@ -163,6 +163,20 @@ public final class SolverSettings {
         return this;
     }
 
+    /**
+     * Mode and solver at once, the pair checked together: what the two setters above check one at a time,
+     * without an order to call them in (PBD with a global solver is refused, naming the solver).
+     */
+    public SolverSettings modeAndSolver(ConstraintMode m, SolverType t) {
+        if (m == null) throw new IllegalArgumentException("mode must be PBD or XPBD, was null");
+        if (t == null) throw new IllegalArgumentException("solver must be one of " + java.util.Arrays.toString(SolverType.values()) + ", was null");
+        if (m == ConstraintMode.PBD && t != SolverType.GAUSS_SEIDEL)
+            throw new IllegalArgumentException("solver must be gauss-seidel in PBD mode (the other solvers need XPBD's compliance), was " + t.label());
+        mode = m;
+        solver = t;
+        return this;
+    }
+
     /** Relative residual at which conjugate gradients stop, in (0, 1). */
     public double pcgTolerance() { return pcgTolerance; }
 

@@ -41,9 +41,9 @@ public final class Scene {
         cloth = preset.cloth.isMesh() ? meshCloth(preset) : gridCloth(preset);
 
         Preset.Solver s = preset.solver;
-        SolverSettings settings = new SolverSettings().mode(s.mode).iterations(s.iterations).substeps(s.substeps)
+        SolverSettings settings = new SolverSettings().modeAndSolver(s.mode, s.type).iterations(s.iterations).substeps(s.substeps)
                 .timestep(s.dt).mullerCorrection(s.mullerCorrection).gravity(s.gravity[0], s.gravity[1], s.gravity[2])
-                .damping(s.damping).solver(s.type);
+                .damping(s.damping);
         simulation = cloth.simulation(settings);
         if (preset.fabric != null) {
             Preset.FabricSpec f = preset.fabric;

@@ -83,7 +83,7 @@ public final class SketchState {
     private void use(Preset p) {
         Scene fresh = Scene.of(p); // builds or throws before anything here changes
         preset = p;
-        shared.solver(SolverType.GAUSS_SEIDEL).mode(p.solver.mode).solver(p.solver.type).iterations(p.solver.iterations)
+        shared.modeAndSolver(p.solver.mode, p.solver.type).iterations(p.solver.iterations)
                 .substeps(p.solver.substeps).timestep(p.solver.dt).mullerCorrection(p.solver.mullerCorrection);
         fabric = p.fabric == null ? null : p.fabric.fabric;
         materials.clear();
@@ -112,10 +112,9 @@ public final class SketchState {
         for (Scene s : running()) {
             SolverSettings st = s.simulation().settings();
             ConstraintMode m = s == left ? ConstraintMode.PBD : s == right ? ConstraintMode.XPBD : shared.mode();
-            // Gauss–Seidel first, so that no intermediate state pairs PBD with a global solver.
             st.iterations(shared.iterations()).substeps(shared.substeps()).timestep(shared.timestep())
                     .mullerCorrection(shared.mullerCorrection()).threads(threads)
-                    .solver(SolverType.GAUSS_SEIDEL).mode(m).solver(m == ConstraintMode.PBD ? SolverType.GAUSS_SEIDEL : shared.solver());
+                    .modeAndSolver(m, m == ConstraintMode.PBD ? SolverType.GAUSS_SEIDEL : shared.solver());
             materials.forEach(s.simulation()::setMaterial);
             if (fabric != null && s.fabric() != fabric) s.useFabric(fabric);
             s.setWind(windOn);

@@ -29,6 +29,17 @@ class NeverNaNTest {
         assertTrue(e.getMessage().startsWith("mode must be XPBD while the solver is multigrid-pcg"), e.getMessage());
         assertTrue(e.getMessage().endsWith("was PBD"), e.getMessage());
         assertEquals(ConstraintMode.XPBD, t.mode());
+
+        // Both at once, in one call, from either side: the pair is what is checked.
+        t.modeAndSolver(ConstraintMode.PBD, SolverType.GAUSS_SEIDEL);
+        assertEquals(ConstraintMode.PBD, t.mode());
+        assertEquals(SolverType.GAUSS_SEIDEL, t.solver());
+        t.modeAndSolver(ConstraintMode.XPBD, SolverType.VERTEX_BLOCK_DESCENT);
+        assertEquals(SolverType.VERTEX_BLOCK_DESCENT, t.solver());
+        e = assertThrows(IllegalArgumentException.class, () -> t.modeAndSolver(ConstraintMode.PBD, SolverType.JACOBI_PCG));
+        assertEquals("solver must be gauss-seidel in PBD mode (the other solvers need XPBD's compliance), was jacobi-pcg", e.getMessage());
+        assertEquals(ConstraintMode.XPBD, t.mode());
+        assertEquals(SolverType.VERTEX_BLOCK_DESCENT, t.solver());
     }
 
     /**
