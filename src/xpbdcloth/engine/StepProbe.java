@@ -2,8 +2,9 @@ package xpbdcloth.engine;
 
 /**
  * Finds where a replayed step first leaves a non-finite number: the stage, and in the solve the
- * constraint family. It watches the state after every stage ({@link StepObserver}) and, through a probed
- * solve stage, after every projection; when it finds one it records where and unwinds the replay.
+ * constraint family. It watches the state after every stage ({@link StepObserver}) and, passed to the solve
+ * stage ({@link SolveStage#solve}), after every projection; when it finds one it records where and unwinds
+ * the replay.
  */
 final class StepProbe implements StepObserver {
     /** Thrown to stop the replay at the first non-finite number (no stack trace: it is control flow). */

@@ -1,14 +1,14 @@
 package xpbdcloth.library;
 
 import java.io.File;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
 import processing.core.PApplet;
 import processing.core.PConstants;
 import processing.event.KeyEvent;
 import processing.event.MouseEvent;
 import processing.opengl.PGraphicsOpenGL;
-import java.util.ArrayList;
-import java.util.Collections;
-import java.util.List;
 import xpbdcloth.engine.Cloth;
 import xpbdcloth.engine.ConstraintMode;
 import xpbdcloth.engine.Simulation;

@@ -27,10 +27,10 @@ import xpbdcloth.fabric.DataDrivenSample;
 import xpbdcloth.fabric.Fabric;
 import xpbdcloth.mesh.BodyMesh;
 import xpbdcloth.mesh.ClothMesh;
-import xpbdcloth.mesh.UsdMeshAnimation;
-import xpbdcloth.mesh.UsdaReader;
 import xpbdcloth.mesh.MeshFileException;
 import xpbdcloth.mesh.ObjReader;
+import xpbdcloth.mesh.UsdMeshAnimation;
+import xpbdcloth.mesh.UsdaReader;
 
 /**
  * Reads scene presets (JSON) strictly: bad syntax, a missing or unknown field, a wrong type or a value out

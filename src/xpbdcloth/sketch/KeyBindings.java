@@ -3,8 +3,8 @@ package xpbdcloth.sketch;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
-import xpbdcloth.engine.Material;
 import xpbdcloth.engine.ConstraintFamily;
+import xpbdcloth.engine.Material;
 
 /**
  * The one table of keys: the key handler dispatches through it and the help overlay and README list it.

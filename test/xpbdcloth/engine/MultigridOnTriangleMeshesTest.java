@@ -7,10 +7,10 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
-import xpbdcloth.mesh.ClothMesh;
-import xpbdcloth.mesh.SquareSheet;
 import xpbdcloth.linalg.AggregationMultigrid;
 import xpbdcloth.linalg.SparseMatrix;
+import xpbdcloth.mesh.ClothMesh;
+import xpbdcloth.mesh.SquareSheet;
 
 /**
  * The multigrid preconditioner on triangle meshes, where edges meet at 45° and 90° and a chain of
