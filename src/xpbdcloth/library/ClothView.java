@@ -9,6 +9,7 @@ import processing.core.PConstants;
 import processing.event.KeyEvent;
 import processing.event.MouseEvent;
 import processing.opengl.PGraphicsOpenGL;
+import xpbdcloth.engine.Check;
 import xpbdcloth.engine.Cloth;
 import xpbdcloth.engine.ConstraintMode;
 import xpbdcloth.engine.Simulation;
@@ -289,14 +290,14 @@ public final class ClothView {
 
     /** Solver iterations per substep, in [1, 1000]; refused with a {@link #message()} beyond the presets' work limit. */
     public ClothView iterations(int n) {
-        check("iterations", n, Limits.ITERATIONS);
+        Check.inRange("iterations", n, (long) Limits.ITERATIONS.lo, (long) Limits.ITERATIONS.hi);
         state.changeIterations(n - state.iterations());
         return this;
     }
 
     /** Substeps per step, in [1, 100]; refused with a {@link #message()} beyond the presets' work limit. */
     public ClothView substeps(int n) {
-        check("substeps", n, Limits.SUBSTEPS);
+        Check.inRange("substeps", n, (long) Limits.SUBSTEPS.lo, (long) Limits.SUBSTEPS.hi);
         state.changeSubsteps(n - state.substeps());
         return this;
     }
@@ -317,10 +318,6 @@ public final class ClothView {
         release();
         state.reset();
         return this;
-    }
-
-    private static void check(String field, int value, Limits.Range range) {
-        if (!range.contains(value)) throw new IllegalArgumentException(field + " must be in " + range.text() + ", was " + value);
     }
 
     /** PBD on the left and XPBD on the right, the same cloth otherwise. */
