@@ -36,7 +36,10 @@ public abstract class ConstraintBlock {
     private double stiffness = 1.0, compliance = 0.0, stiffnessPerSweep = 1.0;
     /** Per-constraint values, null while every constraint has the block's. */
     private double[] stiffnessOf, complianceOf, stiffnessPerSweepOf;
-    private long preparedRevision = -1;
+    /** The iteration count and correction switch the k' above were computed for; {@link #STALE} to recompute. */
+    private int preparedIterations = STALE;
+    private boolean preparedMuller;
+    private static final int STALE = -1;
     /** The simulation this block is solved in, or null. */
     ConstraintSet owner;
 
@@ -85,7 +88,7 @@ public abstract class ConstraintBlock {
         stiffness = k;
         stiffnessOf = null;
         stiffnessPerSweepOf = null;
-        preparedRevision = -1;
+        preparedIterations = STALE;
     }
 
     /** XPBD compliance α ≥ 0 (m/N) for every constraint of the block. */
@@ -122,7 +125,7 @@ public abstract class ConstraintBlock {
             stiffnessPerSweepOf = filled(stiffnessPerSweep);
         }
         for (int r = firstRowWith(i), end = lastRowWith(i); r <= end; r++) stiffnessOf[r] = k;
-        preparedRevision = -1;
+        preparedIterations = STALE;
     }
 
     /** XPBD compliance α ≥ 0 (m/N) for constraint i alone (for its unit's rows, where they share their material). */
@@ -185,7 +188,7 @@ public abstract class ConstraintBlock {
             stiffness = from.stiffness(j);
             compliance = from.compliance(j);
             stiffnessPerSweep = from.stiffnessPerSweep(j);
-            preparedRevision = -1;
+            preparedIterations = STALE;
         }
         if (count == lambda.length) grow(2 * count);
         int i = count++;
@@ -234,10 +237,11 @@ public abstract class ConstraintBlock {
     /** Once per substep before the sweeps: λ = 0, and k' refreshed if n, k or the correction changed. */
     final void beginSubstep(SolverContext ctx) {
         Arrays.fill(lambda, 0, count, 0);
-        if (preparedRevision == ctx.revision) return;
+        if (preparedIterations == ctx.iterations && preparedMuller == ctx.mullerCorrection) return;
         stiffnessPerSweep = perSweep(stiffness, ctx);
         if (stiffnessOf != null) for (int i = 0; i < count; i++) stiffnessPerSweepOf[i] = perSweep(stiffnessOf[i], ctx);
-        preparedRevision = ctx.revision;
+        preparedIterations = ctx.iterations;
+        preparedMuller = ctx.mullerCorrection;
     }
 
     /** Müller's k' = 1 − (1 − k)^(1/n), so n sweeps of one constraint remove the fraction k of its error. */

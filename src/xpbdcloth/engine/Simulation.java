@@ -22,7 +22,7 @@ import java.util.List;
  */
 public final class Simulation {
     private final Particles particles;
-    private final SolverSettings settings;
+    private SolverSettings settings;
     private final ConstraintSet constraints;
     private final List<Sphere> spheres = new ArrayList<>();
     private final List<RigidCollider> solids = new ArrayList<>();
@@ -49,7 +49,7 @@ public final class Simulation {
         this.particles = particles;
         this.settings = settings;
         this.constraints = new ConstraintSet(particles.count());
-        this.stages = new SolveStages(constraints, particles, ctx, settings, contacts);
+        this.stages = new SolveStages(constraints, particles, ctx, contacts);
         this.profile = new StepProfile(contacts, particles, stages);
         this.snapshot = new StepSnapshot(particles.count());
         this.prediction = new double[3 * particles.count()];
@@ -57,6 +57,16 @@ public final class Simulation {
 
     public Particles particles() { return particles; }
     public SolverSettings settings() { return settings; }
+
+    /**
+     * Takes new settings whole, from the next step on (a value, already validated; a step in progress keeps
+     * the ones it started with). Particles, λ and the constraints are kept: a changed mode, solver or
+     * iteration count acts on the same cloth.
+     */
+    public void settings(SolverSettings s) {
+        if (s == null) throw new IllegalArgumentException("settings must not be null, was null");
+        settings = s;
+    }
     public double time() { return time; }
     public long stepCount() { return stepCount; }
     public List<Sphere> spheres() { return Collections.unmodifiableList(spheres); }
@@ -201,7 +211,8 @@ public final class Simulation {
      */
     private void run(double dt, StepProbe probe) {
         final StepObserver observer = probe == null ? StepObserver.NONE : probe;
-        final SolveStage solveStage = stages.stage(sweepListener);
+        final SolverSettings settings = this.settings; // the step's, whatever a listener sets meanwhile
+        final SolveStage solveStage = stages.stage(settings, sweepListener);
         final int substeps = settings.substeps(), iterations = settings.iterations();
         final double h = dt / substeps;
         final AttachmentBlock attachments = constraints.attachments();

@@ -14,7 +14,6 @@ final class SolveStages {
     private final ConstraintSet constraints;
     private final Particles particles;
     private final SolverContext ctx;
-    private final SolverSettings settings;
     private final ContactSet contacts;
     private Colouring clothColouring;
     private long clothColouringVersion = -1;
@@ -33,27 +32,26 @@ final class SolveStages {
     private GlobalSolver chosenGlobal;
     private long chosenVersion = -1;
 
-    SolveStages(ConstraintSet constraints, Particles particles, SolverContext ctx, SolverSettings settings, ContactSet contacts) {
+    SolveStages(ConstraintSet constraints, Particles particles, SolverContext ctx, ContactSet contacts) {
         this.constraints = constraints;
         this.particles = particles;
         this.ctx = ctx;
-        this.settings = settings;
         this.contacts = contacts;
     }
 
-    /** The solve stage for the current settings and constraints, made only if one of them changed. */
-    SolveStage stage(SweepListener listener) {
+    /** The solve stage for these settings and the current constraints, made only if one of them changed. */
+    SolveStage stage(SolverSettings settings, SweepListener listener) {
         SolverType type = settings.solver();
         boolean colouredOrder = settings.order() == ConstraintOrder.COLOURED;
         int threads = settings.threads();
-        GlobalSolver g = type.isGlobal() ? globalSolver() : null; // remade if the PCG settings changed
+        GlobalSolver g = type.isGlobal() ? globalSolver(settings) : null; // remade if the PCG settings changed
         if (stage != null && type == chosenType && colouredOrder == chosenColoured && threads == chosenThreads
                 && listener == chosenListener && g == chosenGlobal && constraints.version() == chosenVersion) return stage;
         AttachmentBlock attachments = constraints.attachments();
         // The team runs a substep's sweeps in one go, so a listener to single sweeps gets a sequential stage.
         Team helpers = listener == SweepListener.NONE ? team(threads) : null;
         if (type == SolverType.VERTEX_BLOCK_DESCENT) {
-            stage = new VertexBlockDescent(constraints.cloth(), attachments, particles, ctx, settings, contacts, listener, helpers);
+            stage = new VertexBlockDescent(constraints.cloth(), attachments, particles, ctx, contacts, listener, helpers);
         } else if (g != null) {
             List<ConstraintBlock> local = new ArrayList<>();
             for (ConstraintBlock blk : constraints.cloth()) if (!GlobalSolver.takes(blk)) local.add(blk);
@@ -89,7 +87,7 @@ final class SolveStages {
         return coloured;
     }
 
-    private GlobalSolver globalSolver() {
+    private GlobalSolver globalSolver(SolverSettings settings) {
         boolean mg = settings.solver() == SolverType.MULTIGRID_PCG;
         if (global == null || globalVersion != constraints.clothVersion() || global.multigrid() != mg
                 || global.tolerance() != settings.pcgTolerance() || global.maxIterations() != settings.pcgMaxIterations()) {
@@ -115,8 +113,8 @@ final class SolveStages {
     /** The last global solver built (kept while another solver type is chosen), or null. */
     GlobalSolver global() { return global; }
 
-    /** The global solver the settings choose now, or null. */
-    GlobalSolver globalInUse() { return settings.solver().isGlobal() ? global : null; }
+    /** The global solver of the stage chosen last (the last step's), or null. */
+    GlobalSolver globalInUse() { return chosenGlobal; }
 
     int globalSetups() { return globalSetups; }
 

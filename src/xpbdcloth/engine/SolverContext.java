@@ -12,8 +12,8 @@ public final class SolverContext {
     double h = 1;
     /** 1/h², so α̃ = α/h² is one multiplication. */
     double inverseH2 = 1;
-    /** Identifies the iteration count and correction switch the cached k' were computed for. */
-    long revision = 0;
+    /** Gravity, m/s² (what the prediction adds; vertex block descent's inertia reads it too). */
+    double gravityX, gravityY, gravityZ;
 
     void load(SolverSettings s, double h) {
         mode = s.mode();
@@ -21,7 +21,7 @@ public final class SolverContext {
         mullerCorrection = s.mullerCorrection();
         this.h = h;
         inverseH2 = 1.0 / (h * h);
-        revision = s.revision();
+        gravityX = s.gravityX(); gravityY = s.gravityY(); gravityZ = s.gravityZ();
     }
 
     public ConstraintMode mode() { return mode; }

@@ -1,92 +1,98 @@
 package xpbdcloth.engine;
 
+import java.util.Arrays;
+import java.util.Objects;
+
 /**
- * The solver's parameters with their defaults and units, validated at the edge (an invalid value throws
- * {@link IllegalArgumentException} naming the parameter and changes nothing).
+ * The solver's parameters with their defaults and units: an immutable value. Each {@code withX} returns a
+ * new value, validated at the edge (an invalid value throws {@link IllegalArgumentException} naming the
+ * parameter and the value it was, and the old value is left as it was); a simulation takes a whole value
+ * at once ({@link Simulation#settings(SolverSettings)}), so there is no order to set parameters in and
+ * nothing to count changes with.
  *
  * <p>Defaults follow the original simulator: XPBD, 2 Gauss–Seidel iterations, dt = 20 ms, one substep,
  * gravity 9.81 m/s² along −y (y is up).
  */
 public final class SolverSettings {
-    private ConstraintMode mode = ConstraintMode.XPBD;
-    private int iterations = 2;
-    private int substeps = 1;
-    private double timestep = 0.020;
-    private boolean mullerCorrection = true;
-    private double gravityX = 0, gravityY = -9.81, gravityZ = 0;
+    private final ConstraintMode mode;
+    private final int iterations;
+    private final int substeps;
+    private final double timestep;
+    private final boolean mullerCorrection;
+    private final double gravityX, gravityY, gravityZ;
     /** Velocity damping c, 1/s: v decays as e^(−c·t) in the velocity pass; 0 = none (the original's). */
-    private double damping = 0;
-    private ConstraintOrder order = ConstraintOrder.AS_BUILT;
-    private int threads = 1;
-    private SolverType solver = SolverType.GAUSS_SEIDEL;
-    /**
-     * Inexact Newton: each global iteration is only a linearisation, so its linear system need not be
-     * solved tightly; of 1e-1, 1e-3 and 1e-5, 1e-1 reached a 1e-6 nonlinear residual soonest (experiment 7).
-     */
-    private double pcgTolerance = 1e-1;
+    private final double damping;
+    private final ConstraintOrder order;
+    private final int threads;
+    private final SolverType solver;
+    /** Relative residual at which conjugate gradients stop (see {@link #withPcgTolerance}). */
+    private final double pcgTolerance;
     /** A cap that keeps a global iteration's cost bounded when the system is badly conditioned. */
-    private int pcgMaxIterations = 300;
-    /** Bumped on every change that invalidates a constraint's cached per-iteration stiffness. */
-    private long revision;
+    private final int pcgMaxIterations;
 
-    public SolverSettings() {}
+    /**
+     * The defaults. Inexact Newton's PCG tolerance is 1e-1: each global iteration is only a linearisation, so
+     * its linear system need not be solved tightly; of 1e-1, 1e-3 and 1e-5, 1e-1 reached a 1e-6 nonlinear
+     * residual soonest (experiment 7).
+     */
+    public SolverSettings() {
+        this(ConstraintMode.XPBD, 2, 1, 0.020, true, 0, -9.81, 0, 0, ConstraintOrder.AS_BUILT, 1, SolverType.GAUSS_SEIDEL, 1e-1, 300);
+    }
 
-    public SolverSettings copy() {
-        SolverSettings s = new SolverSettings();
-        s.mode = mode;
-        s.iterations = iterations;
-        s.substeps = substeps;
-        s.timestep = timestep;
-        s.mullerCorrection = mullerCorrection;
-        s.gravityX = gravityX; s.gravityY = gravityY; s.gravityZ = gravityZ;
-        s.damping = damping;
-        s.order = order;
-        s.threads = threads;
-        s.solver = solver;
-        s.pcgTolerance = pcgTolerance;
-        s.pcgMaxIterations = pcgMaxIterations;
-        return s;
+    private SolverSettings(ConstraintMode mode, int iterations, int substeps, double timestep, boolean mullerCorrection,
+                           double gravityX, double gravityY, double gravityZ, double damping, ConstraintOrder order,
+                           int threads, SolverType solver, double pcgTolerance, int pcgMaxIterations) {
+        this.mode = mode;
+        this.iterations = iterations;
+        this.substeps = substeps;
+        this.timestep = timestep;
+        this.mullerCorrection = mullerCorrection;
+        this.gravityX = gravityX; this.gravityY = gravityY; this.gravityZ = gravityZ;
+        this.damping = damping;
+        this.order = order;
+        this.threads = threads;
+        this.solver = solver;
+        this.pcgTolerance = pcgTolerance;
+        this.pcgMaxIterations = pcgMaxIterations;
     }
 
     public ConstraintMode mode() { return mode; }
 
     /**
-     * Every constraint of the simulation switches formulation at the next projection; state is kept.
-     * PBD needs the Gauss–Seidel solver (see {@link #solver(SolverType)}); asking for PBD while a global
-     * solver is chosen is refused and changes nothing.
+     * Every constraint of a simulation given these settings switches formulation at its next projection;
+     * state is kept. PBD needs the Gauss–Seidel solver (see {@link #withSolver}); PBD while a global solver is
+     * chosen is refused ({@link #withModeAndSolver} sets both at once).
      */
-    public SolverSettings mode(ConstraintMode m) {
+    public SolverSettings withMode(ConstraintMode m) {
         if (m == null) throw new IllegalArgumentException("mode must be PBD or XPBD, was null");
         if (m == ConstraintMode.PBD && solver != SolverType.GAUSS_SEIDEL)
             throw new IllegalArgumentException("mode must be XPBD while the solver is " + solver.label()
                     + " (PBD's stiffness k is defined per Gauss-Seidel projection), was PBD");
-        mode = m;
-        return this;
+        return new SolverSettings(m, iterations, substeps, timestep, mullerCorrection, gravityX, gravityY, gravityZ, damping, order, threads, solver, pcgTolerance, pcgMaxIterations);
     }
 
     /** Gauss–Seidel sweeps per substep, n ≥ 1. */
     public int iterations() { return iterations; }
 
-    public SolverSettings iterations(int n) {
-        iterations = Check.inRange("iterations", n, 1, EngineRange.MAX_ITERATIONS);
-        revision++;
-        return this;
+    public SolverSettings withIterations(int n) {
+        Check.inRange("iterations", n, 1, EngineRange.MAX_ITERATIONS);
+        return new SolverSettings(mode, n, substeps, timestep, mullerCorrection, gravityX, gravityY, gravityZ, damping, order, threads, solver, pcgTolerance, pcgMaxIterations);
     }
 
     /** Substeps per step, s ≥ 1: the step dt is split into s substeps of h = dt/s (Macklin et al. 2019). */
     public int substeps() { return substeps; }
 
-    public SolverSettings substeps(int s) {
-        substeps = Check.inRange("substeps", s, 1, EngineRange.MAX_SUBSTEPS);
-        return this;
+    public SolverSettings withSubsteps(int s) {
+        Check.inRange("substeps", s, 1, EngineRange.MAX_SUBSTEPS);
+        return new SolverSettings(mode, iterations, s, timestep, mullerCorrection, gravityX, gravityY, gravityZ, damping, order, threads, solver, pcgTolerance, pcgMaxIterations);
     }
 
     /** The step dt in seconds, &gt; 0 (the frame's simulated time). */
     public double timestep() { return timestep; }
 
-    public SolverSettings timestep(double dt) {
-        timestep = Check.inRange("dt", dt, EngineRange.MIN_DT, EngineRange.MAX_DT);
-        return this;
+    public SolverSettings withTimestep(double dt) {
+        Check.inRange("dt", dt, EngineRange.MIN_DT, EngineRange.MAX_DT);
+        return new SolverSettings(mode, iterations, substeps, dt, mullerCorrection, gravityX, gravityY, gravityZ, damping, order, threads, solver, pcgTolerance, pcgMaxIterations);
     }
 
     /**
@@ -95,10 +101,8 @@ public final class SolverSettings {
      */
     public boolean mullerCorrection() { return mullerCorrection; }
 
-    public SolverSettings mullerCorrection(boolean on) {
-        mullerCorrection = on;
-        revision++;
-        return this;
+    public SolverSettings withMullerCorrection(boolean on) {
+        return new SolverSettings(mode, iterations, substeps, timestep, on, gravityX, gravityY, gravityZ, damping, order, threads, solver, pcgTolerance, pcgMaxIterations);
     }
 
     /** Gravity as an acceleration, m/s². */
@@ -106,10 +110,9 @@ public final class SolverSettings {
     public double gravityY() { return gravityY; }
     public double gravityZ() { return gravityZ; }
 
-    public SolverSettings gravity(double gx, double gy, double gz) {
+    public SolverSettings withGravity(double gx, double gy, double gz) {
         EngineRange.vector("gravity", gx, gy, gz, EngineRange.MAX_GRAVITY);
-        gravityX = gx; gravityY = gy; gravityZ = gz;
-        return this;
+        return new SolverSettings(mode, iterations, substeps, timestep, mullerCorrection, gx, gy, gz, damping, order, threads, solver, pcgTolerance, pcgMaxIterations);
     }
 
     /** Velocity damping c (1/s), applied after each substep as v ← v·e^(−c·h). */
@@ -120,28 +123,25 @@ public final class SolverSettings {
      * substep makes the decay e^(−c·t) whatever dt and the substep count are (a per-step factor would make
      * the cloth's damping depend on the frame rate).
      */
-    public SolverSettings damping(double perSecond) {
-        damping = Check.inRange("damping", perSecond, 0, EngineRange.MAX_DAMPING);
-        return this;
+    public SolverSettings withDamping(double perSecond) {
+        Check.inRange("damping", perSecond, 0, EngineRange.MAX_DAMPING);
+        return new SolverSettings(mode, iterations, substeps, timestep, mullerCorrection, gravityX, gravityY, gravityZ, perSecond, order, threads, solver, pcgTolerance, pcgMaxIterations);
     }
 
     /** The order of each sweep (default as built); more than one thread always uses the coloured order. */
     public ConstraintOrder order() { return threads > 1 ? ConstraintOrder.COLOURED : order; }
 
-    public SolverSettings order(ConstraintOrder o) {
+    public SolverSettings withOrder(ConstraintOrder o) {
         if (o == null) throw new IllegalArgumentException("order must be AS_BUILT or COLOURED, was null");
-        order = o;
-        return this;
+        return new SolverSettings(mode, iterations, substeps, timestep, mullerCorrection, gravityX, gravityY, gravityZ, damping, o, threads, solver, pcgTolerance, pcgMaxIterations);
     }
 
     /** Threads for the sweeps, 1 to 64; above 1 the coloured order is split across them. */
     public int threads() { return threads; }
 
-    public SolverSettings threads(int t) {
-        Check.atLeast("threads", t, 1);
-        if (t > 64) throw new IllegalArgumentException("threads must be <= 64, was " + t);
-        threads = t;
-        return this;
+    public SolverSettings withThreads(int t) {
+        Check.inRange("threads", t, 1, 64);
+        return new SolverSettings(mode, iterations, substeps, timestep, mullerCorrection, gravityX, gravityY, gravityZ, damping, order, t, solver, pcgTolerance, pcgMaxIterations);
     }
 
     /** Gauss–Seidel (default), a global PCG solve per iteration, or vertex block descent. */
@@ -155,44 +155,55 @@ public final class SolverSettings {
      * hard, and the redundant hard system (4865 constraints on 3066 degrees of freedom at 32²) is
      * singular: conjugate gradients diverged and the shipped scenes went NaN within one or two steps.
      */
-    public SolverSettings solver(SolverType t) {
-        if (t == null) throw new IllegalArgumentException("solver must be one of " + java.util.Arrays.toString(SolverType.values()) + ", was null");
-        if (t != SolverType.GAUSS_SEIDEL && mode == ConstraintMode.PBD)
-            throw new IllegalArgumentException("solver must be gauss-seidel in PBD mode (the other solvers need XPBD's compliance), was " + t.label());
-        solver = t;
-        return this;
+    public SolverSettings withSolver(SolverType t) {
+        return withModeAndSolver(mode, t);
     }
 
     /**
-     * Mode and solver at once, the pair checked together: what the two setters above check one at a time,
+     * Mode and solver at once, the pair checked together: what the two withers above check one at a time,
      * without an order to call them in (PBD with a global solver is refused, naming the solver).
      */
-    public SolverSettings modeAndSolver(ConstraintMode m, SolverType t) {
+    public SolverSettings withModeAndSolver(ConstraintMode m, SolverType t) {
         if (m == null) throw new IllegalArgumentException("mode must be PBD or XPBD, was null");
-        if (t == null) throw new IllegalArgumentException("solver must be one of " + java.util.Arrays.toString(SolverType.values()) + ", was null");
+        if (t == null) throw new IllegalArgumentException("solver must be one of " + Arrays.toString(SolverType.values()) + ", was null");
         if (m == ConstraintMode.PBD && t != SolverType.GAUSS_SEIDEL)
             throw new IllegalArgumentException("solver must be gauss-seidel in PBD mode (the other solvers need XPBD's compliance), was " + t.label());
-        mode = m;
-        solver = t;
-        return this;
+        return new SolverSettings(m, iterations, substeps, timestep, mullerCorrection, gravityX, gravityY, gravityZ, damping, order, threads, t, pcgTolerance, pcgMaxIterations);
     }
 
     /** Relative residual at which conjugate gradients stop, in (0, 1). */
     public double pcgTolerance() { return pcgTolerance; }
 
-    public SolverSettings pcgTolerance(double tol) {
+    public SolverSettings withPcgTolerance(double tol) {
         if (!(tol > 0 && tol < 1)) throw new IllegalArgumentException("pcgTolerance must be in (0, 1), was " + tol);
-        pcgTolerance = tol;
-        return this;
+        return new SolverSettings(mode, iterations, substeps, timestep, mullerCorrection, gravityX, gravityY, gravityZ, damping, order, threads, solver, tol, pcgMaxIterations);
     }
 
     /** Most conjugate-gradient iterations per global iteration, ≥ 1. */
     public int pcgMaxIterations() { return pcgMaxIterations; }
 
-    public SolverSettings pcgMaxIterations(int n) {
-        pcgMaxIterations = Check.inRange("pcgMaxIterations", n, 1, EngineRange.MAX_PCG_ITERATIONS);
-        return this;
+    public SolverSettings withPcgMaxIterations(int n) {
+        Check.inRange("pcgMaxIterations", n, 1, EngineRange.MAX_PCG_ITERATIONS);
+        return new SolverSettings(mode, iterations, substeps, timestep, mullerCorrection, gravityX, gravityY, gravityZ, damping, order, threads, solver, pcgTolerance, n);
     }
 
-    long revision() { return revision; }
+    @Override public boolean equals(Object o) {
+        if (!(o instanceof SolverSettings)) return false;
+        SolverSettings s = (SolverSettings) o;
+        return mode == s.mode && iterations == s.iterations && substeps == s.substeps && timestep == s.timestep
+                && mullerCorrection == s.mullerCorrection && gravityX == s.gravityX && gravityY == s.gravityY && gravityZ == s.gravityZ
+                && damping == s.damping && order == s.order && threads == s.threads && solver == s.solver
+                && pcgTolerance == s.pcgTolerance && pcgMaxIterations == s.pcgMaxIterations;
+    }
+
+    @Override public int hashCode() {
+        return Objects.hash(mode, iterations, substeps, timestep, mullerCorrection, gravityX, gravityY, gravityZ, damping, order, threads, solver,
+                pcgTolerance, pcgMaxIterations);
+    }
+
+    @Override public String toString() {
+        return mode + " " + solver.label() + ", " + iterations + " iterations × " + substeps + " substeps, dt " + timestep + " s"
+                + (mode == ConstraintMode.PBD ? ", Müller's k' " + (mullerCorrection ? "on" : "off") : "")
+                + ", gravity (" + gravityX + ", " + gravityY + ", " + gravityZ + ") m/s², damping " + damping + "/s, " + threads + " thread(s)";
+    }
 }

@@ -38,7 +38,6 @@ import java.util.List;
 final class VertexBlockDescent implements SolveStage, Team.Job {
     private final Particles particles;
     private final SolverContext ctx;
-    private final SolverSettings settings;
     /** What is projected after each iteration: hard and inequality blocks, attachments (XPBD), then contacts. */
     private final SweepOrder rest;
     private final ContactSet contacts;
@@ -141,11 +140,10 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
         return true;
     }
 
-    VertexBlockDescent(List<ConstraintBlock> body, AttachmentBlock attachments, Particles particles, SolverContext ctx, SolverSettings settings,
+    VertexBlockDescent(List<ConstraintBlock> body, AttachmentBlock attachments, Particles particles, SolverContext ctx,
                        ContactSet contacts, SweepListener listener, Team team) {
         this.particles = particles;
         this.ctx = ctx;
-        this.settings = settings;
         this.contacts = contacts;
         this.listener = listener;
         this.team = team;
@@ -459,7 +457,7 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
         }
         final double h = ctx.h, h2 = h * h;
         final double[] x = particles.x, w = particles.w, f = particles.force, y = target;
-        final double gx = settings.gravityX(), gy = settings.gravityY(), gz = settings.gravityZ();
+        final double gx = ctx.gravityX, gy = ctx.gravityY, gz = ctx.gravityZ;
         // y is where the prediction put the free particles; the iteration starts at x_prev + h v, without
         // this substep's external acceleration: at rest that is the rest, a fixed point.
         for (int i = 0; i < n; i++) {

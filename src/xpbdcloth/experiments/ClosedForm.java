@@ -29,7 +29,7 @@ final class ClosedForm implements Experiment {
         int steps = (int) Math.round(seconds * 60), ramp = (int) (0.6 * steps);
         for (int s = 0; s < steps; s++) {
             double u = Math.min(1.0, (s + 1.0) / ramp), ease = u * u * (3 - 2 * u);
-            sim.settings().gravity(0, -Rigs.G * ease, 0);
+            sim.settings(sim.settings().withGravity(0, -Rigs.G * ease, 0));
             sim.step();
         }
         Particles p = sim.particles();

@@ -31,7 +31,7 @@ final class DynamicFitRecovery implements Experiment {
         double[] truth = new double[4];
         Scene drape = Scene.builtIn("drape");
         for (int f = 0; f < 3; f++) truth[f] = drape.preset().families.get(FAMILIES.get(f)).compliance;
-        truth[3] = drape.preset().solver.damping;
+        truth[3] = drape.preset().solver.damping();
         Table t = new Table(name(), "run", "iteration", "loss_m2", "rms_m", "alpha_structural", "alpha_shear", "alpha_bend", "damping_per_s", "worst_relative_error", "simulations");
         Plot plot = new Plot("Dynamic fit of drape's first second: worst parameter error per iteration", "BFGS iteration", "worst relative error of α and c", false, true).legendRight();
         List<String> out = new ArrayList<>();

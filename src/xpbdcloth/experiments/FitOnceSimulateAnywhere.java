@@ -44,11 +44,11 @@ final class FitOnceSimulateAnywhere implements Experiment {
     static double restDistance(Model model, double[] params, int sweeps, double dt, double[] observed, double seconds) {
         Scene scene = Scene.builtIn("drape");
         Simulation sim = scene.simulation();
-        sim.settings().iterations(sweeps).substeps(1).timestep(dt).damping(2);
+        sim.settings(sim.settings().withIterations(sweeps).withSubsteps(1).withTimestep(dt).withDamping(2));
         if (model == Model.XPBD) {
             for (int f = 0; f < 3; f++) sim.setCompliance(FAMILIES.get(f), params[f]);
         } else {
-            sim.settings().mode(ConstraintMode.PBD).mullerCorrection(model == Model.PBD_MULLER);
+            sim.settings(sim.settings().withMode(ConstraintMode.PBD).withMullerCorrection(model == Model.PBD_MULLER));
             for (int f = 0; f < 3; f++) sim.setStiffness(FAMILIES.get(f), params[f]);
         }
         try {

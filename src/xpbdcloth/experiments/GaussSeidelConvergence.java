@@ -42,13 +42,13 @@ final class GaussSeidelConvergence implements Experiment {
             double ry = p.y(i) - 1, rz = p.z(i) + 0.5;
             p.setVelocity(i, 0, omega * rz, -omega * ry);
         }
-        return c.simulation(new SolverSettings().mode(ConstraintMode.XPBD).iterations(1).substeps(1).timestep(1 / 60.0));
+        return c.simulation(new SolverSettings().withMode(ConstraintMode.XPBD).withIterations(1).withSubsteps(1).withTimestep(1 / 60.0));
     }
 
     /** Residual after each of {@code sweeps} sweeps of one step, relative to before the first (index 0). */
     static double[] residuals(int res, double compliance, int sweeps) {
         Simulation sim = swungCloth(res, compliance);
-        sim.settings().iterations(sweeps).substeps(1);
+        sim.settings(sim.settings().withIterations(sweeps).withSubsteps(1));
         double[] r = new double[sweeps + 1];
         sim.setSweepListener((substep, sweep) -> r[sweep + 1] = Metrics.residual(sim));
         sim.step();

@@ -32,9 +32,9 @@ final class GlobalSolverComparison implements Experiment {
      */
     static List<double[]> trace(int res, double compliance, SolverType type, int budget, double[] setupMs) {
         Simulation sim = GaussSeidelConvergence.swungCloth(res, compliance);
-        sim.settings().substeps(1).solver(type);
-        if (type == SolverType.GAUSS_SEIDEL) sim.settings().iterations(budget);
-        else sim.settings().iterations(60).pcgTolerance(INNER_TOLERANCE).pcgMaxIterations(500);
+        sim.settings(sim.settings().withSubsteps(1).withSolver(type));
+        if (type == SolverType.GAUSS_SEIDEL) sim.settings(sim.settings().withIterations(budget));
+        else sim.settings(sim.settings().withIterations(60).withPcgTolerance(INNER_TOLERANCE).withPcgMaxIterations(500));
         List<double[]> out = new ArrayList<>();
         double[] clock = {0, System.nanoTime(), 0}; // ms so far, last stamp, initial residual
         sim.setSweepListener((substep, sweep) -> {

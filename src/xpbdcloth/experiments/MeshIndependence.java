@@ -55,8 +55,8 @@ final class MeshIndependence implements Experiment {
         if (!fabric) b.family(ConstraintFamily.STRUCTURAL, 1, 1e-6).family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2);
         Cloth cloth = b.build();
         Particles p = cloth.particles();
-        Simulation sim = cloth.simulation(new SolverSettings().mode(ConstraintMode.XPBD).solver(solver).iterations(2).substeps(10).timestep(0.02)
-                .gravity(0, -9.81, 0).damping(2));
+        Simulation sim = cloth.simulation(new SolverSettings().withMode(ConstraintMode.XPBD).withSolver(solver).withIterations(2).withSubsteps(10).withTimestep(0.02)
+                .withGravity(0, -9.81, 0).withDamping(2));
         if (fabric) {
             Fabric denim = FabricCatalogue.named("denim");
             for (ConstraintBlock block : FabricConstraints.build(p, cloth.triangles(), new double[] {1, 0, 0}, denim.membrane, denim.bendingStiffness, false))

@@ -46,8 +46,8 @@ final class MultigridOnTriangles implements Experiment {
         java.util.Random random = new java.util.Random(1);
         if (kind.equals("crumpled")) for (int i = res; i < p.count(); i++) p.setPosition(i, p.x(i), p.y(i) + 0.3 * h * (random.nextDouble() - 0.5), p.z(i));
         for (int i = 0; i < p.count(); i++) if (!p.isPinned(i)) p.setVelocity(i, 0, 3 * (p.z(i) + 0.5), -3 * (p.y(i) - 1));
-        return cloth.simulation(new SolverSettings().mode(ConstraintMode.XPBD).iterations(1).substeps(1).timestep(1 / 60.0)
-                .solver(type).pcgTolerance(1e-6).pcgMaxIterations(5000));
+        return cloth.simulation(new SolverSettings().withMode(ConstraintMode.XPBD).withIterations(1).withSubsteps(1).withTimestep(1 / 60.0)
+                .withSolver(type).withPcgTolerance(1e-6).withPcgMaxIterations(5000));
     }
 
     /** {CG iterations, solve ms (setup excluded), setup ms, rows}. */

@@ -28,7 +28,7 @@ public final class Rigs {
         }
 
         SolverSettings settings() {
-            return new SolverSettings().mode(mode).iterations(iterations).substeps(substeps).timestep(dt).mullerCorrection(muller);
+            return new SolverSettings().withMode(mode).withIterations(iterations).withSubsteps(substeps).withTimestep(dt).withMullerCorrection(muller);
         }
     }
 

@@ -40,8 +40,8 @@ final class SolverChoice implements Experiment {
         int n = segments + 1;
         Cloth cloth = new ClothBuilder().resolution(n, n).size(1, 1).origin(0, 2, 0).arealDensity(0.324).pinTopCorners().build();
         Particles p = cloth.particles();
-        Simulation sim = cloth.simulation(new SolverSettings().mode(ConstraintMode.XPBD).solver(solver).iterations(iterations).substeps(substeps)
-                .timestep(0.02).gravity(0, -9.81, 0).damping(2));
+        Simulation sim = cloth.simulation(new SolverSettings().withMode(ConstraintMode.XPBD).withSolver(solver).withIterations(iterations).withSubsteps(substeps)
+                .withTimestep(0.02).withGravity(0, -9.81, 0).withDamping(2));
         Fabric denim = FabricCatalogue.named("denim");
         for (ConstraintBlock block : FabricConstraints.build(p, cloth.triangles(), new double[] {1, 0, 0}, denim.membrane, denim.bendingStiffness, false))
             sim.add(block);

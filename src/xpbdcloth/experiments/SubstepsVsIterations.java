@@ -33,7 +33,7 @@ final class SubstepsVsIterations implements Experiment {
     static double[] swing(int substeps, int iterations, double seconds) {
         Cloth c = new ClothBuilder().resolution(24, 24).size(1, 1).plane(ClothBuilder.Plane.HORIZONTAL).origin(0, 1.5, 0.5)
                 .arealDensity(0.2).family(ConstraintFamily.STRUCTURAL, 1, ALPHA).pinTopCorners().build();
-        Simulation sim = c.simulation(new SolverSettings().mode(ConstraintMode.XPBD).iterations(iterations).substeps(substeps).timestep(1 / 60.0));
+        Simulation sim = c.simulation(new SolverSettings().withMode(ConstraintMode.XPBD).withIterations(iterations).withSubsteps(substeps).withTimestep(1 / 60.0));
         double e0 = energy(sim), strain = 0;
         int steps = (int) Math.round(seconds * 60), n = 0;
         for (int s = 0; s < steps; s++) {

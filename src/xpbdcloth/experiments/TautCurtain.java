@@ -32,8 +32,8 @@ public final class TautCurtain implements Experiment {
                 .family(ConstraintFamily.STRUCTURAL, 1, 1e-8);
         for (int col = 0; col < n; col++) b.pin(0, col);
         Cloth cloth = b.build();
-        SolverSettings s = new SolverSettings().mode(ConstraintMode.XPBD).timestep(0.02).substeps(1).iterations(4)
-                .solver(SolverType.MULTIGRID_PCG).pcgTolerance(1e-2);
+        SolverSettings s = new SolverSettings().withMode(ConstraintMode.XPBD).withTimestep(0.02).withSubsteps(1).withIterations(4)
+                .withSolver(SolverType.MULTIGRID_PCG).withPcgTolerance(1e-2);
         Simulation sim = cloth.simulation(s);
         Random random = new Random(1);
         Particles p = cloth.particles();

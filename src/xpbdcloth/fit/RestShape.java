@@ -30,7 +30,7 @@ public final class RestShape {
     public static RestShape of(Scene scene) {
         Simulation sim = scene.simulation();
         double keep = sim.settings().damping();
-        sim.settings().damping(Math.max(keep, 2.0));
+        sim.settings(sim.settings().withDamping(Math.max(keep, 2.0)));
         double t0 = sim.time();
         try {
             while (sim.time() - t0 < 20) {
@@ -38,7 +38,7 @@ public final class RestShape {
                 if (sim.time() - t0 > 3 && Metrics.kineticEnergy(sim.particles()) < 1e-9) break;
             }
         } finally {
-            sim.settings().damping(keep);
+            sim.settings(sim.settings().withDamping(keep));
         }
         double[] simulated = sim.particles().positions().clone();
         ClothEnergy energy = new ClothEnergy(sim, List.of());

@@ -35,22 +35,22 @@ public final class SolverRestGap {
     /** Measures the preset's gap and, if it is over {@code tolerance} (m), the substeps that bring it within. */
     public static SolverRestGap of(Preset preset, double tolerance) {
         double own = RestShape.of(Scene.of(preset)).simulatorGapRms; // a FitException if the fitted material has no stable rest
-        if (own <= tolerance) return new SolverRestGap(preset, own, preset.solver.substeps, own);
+        if (own <= tolerance) return new SolverRestGap(preset, own, preset.solver.substeps(), own);
         for (int factor = 2; factor <= 16; factor *= 2) {
             Scene scene = Scene.of(preset);
-            scene.simulation().settings().substeps(preset.solver.substeps * factor);
+            scene.simulation().settings(scene.simulation().settings().withSubsteps(preset.solver.substeps() * factor));
             double gap = RestShape.of(scene).simulatorGapRms;
-            if (gap <= tolerance) return new SolverRestGap(preset, own, preset.solver.substeps * factor, gap);
+            if (gap <= tolerance) return new SolverRestGap(preset, own, preset.solver.substeps() * factor, gap);
         }
         return new SolverRestGap(preset, own, -1, Double.NaN);
     }
 
     /** Whether the simulator at the preset's own settings rests within the tolerance it was measured against. */
-    public boolean withinAtOwnSettings() { return substepsWithin == preset.solver.substeps; }
+    public boolean withinAtOwnSettings() { return substepsWithin == preset.solver.substeps(); }
 
     /** One paragraph for the fit's report. */
     public String say(double fitRms) {
-        String settings = String.format(Locale.ROOT, "dt %.4g ms, %d substeps × %d sweeps", 1e3 * preset.solver.dt, preset.solver.substeps, preset.solver.iterations);
+        String settings = String.format(Locale.ROOT, "dt %.4g ms, %d substeps × %d sweeps", 1e3 * preset.solver.timestep(), preset.solver.substeps(), preset.solver.iterations());
         if (withinAtOwnSettings())
             return String.format(Locale.ROOT, "the simulator at its own settings (%s) rests %.4f mm (RMS) from the equilibrium this fit assumes: "
                     + "a shape it made there is the material's, and the fitted material simulated there rests where it was fitted", settings, atOwnSettings * 1e3);

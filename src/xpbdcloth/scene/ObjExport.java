@@ -69,7 +69,7 @@ public final class ObjExport {
      * Headless: no window, no display. Returns the number of files written.
      */
     public static int recordSequence(Preset preset, int frames, Path folder) throws IOException {
-        return recordSequence(preset, frames, folder, stepsPerFrame(preset.solver.dt));
+        return recordSequence(preset, frames, folder, stepsPerFrame(preset.solver.timestep()));
     }
 
     /** The same with a frame every {@code steps} steps of the preset's dt. */

@@ -8,6 +8,7 @@ import xpbdcloth.engine.ClothBuilder;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.ConstraintMode;
 import xpbdcloth.engine.Material;
+import xpbdcloth.engine.SolverSettings;
 import xpbdcloth.mesh.ClothMesh;
 
 /**
@@ -23,7 +24,8 @@ public final class Preset {
     public final Cloth cloth;
     /** k and α per family; a family absent here is not built. */
     public final Map<ConstraintFamily, Material> families;
-    public final Solver solver;
+    /** The solver section, as the engine takes it. */
+    public final SolverSettings solver;
     public final List<SphereSpec> spheres;
     /** Fixed planes: floors, walls, slopes. */
     public final List<PlaneSpec> planes;
@@ -41,7 +43,7 @@ public final class Preset {
     /** Quadratic drag and lift in moving air, or null. */
     public final AerodynamicsSpec aerodynamics;
 
-    Preset(String source, String name, String description, Cloth cloth, Map<ConstraintFamily, Material> families, Solver solver,
+    Preset(String source, String name, String description, Cloth cloth, Map<ConstraintFamily, Material> families, SolverSettings solver,
            List<SphereSpec> spheres, List<PlaneSpec> planes, List<SolidSpec> solids, List<BodySpec> bodies, SelfCollisionSpec selfCollision, List<PinMotion> pinMotions, WindSpec wind,
            FabricSpec fabric, AerodynamicsSpec aerodynamics) {
         this.source = source;
@@ -154,23 +156,6 @@ public final class Preset {
 
         /** The particle a pin motion names: (row, col) on a grid. */
         int vertex(int row, int col) { return row * columns + col; }
-    }
-
-    public static final class Solver {
-        public final ConstraintMode mode;
-        public final int iterations, substeps;
-        public final double dt;
-        public final boolean mullerCorrection;
-        public final double[] gravity;
-        /** Velocity damping, 1/s (0 when the preset does not say). */
-        public final double damping;
-        public final xpbdcloth.engine.SolverType type;
-
-        Solver(ConstraintMode mode, int iterations, int substeps, double dt, boolean mullerCorrection, double[] gravity,
-               double damping, xpbdcloth.engine.SolverType type) {
-            this.mode = mode; this.iterations = iterations; this.substeps = substeps; this.dt = dt;
-            this.mullerCorrection = mullerCorrection; this.gravity = gravity; this.damping = damping; this.type = type;
-        }
     }
 
     /** A fixed plane collider: a point of its surface and the normal of the side the cloth stays on. */

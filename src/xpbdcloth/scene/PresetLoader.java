@@ -22,6 +22,7 @@ import xpbdcloth.engine.ClothBuilder;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.ConstraintMode;
 import xpbdcloth.engine.Material;
+import xpbdcloth.engine.SolverSettings;
 import xpbdcloth.engine.OrthotropicMaterial;
 import xpbdcloth.fabric.DataDrivenSample;
 import xpbdcloth.fabric.Fabric;
@@ -336,14 +337,14 @@ public final class PresetLoader {
             Preset.Cloth cloth = fn != null && fabric == null ? null : part(() -> cloth(required(root, "cloth"), fabric));
             Node fs = fn == null ? part(() -> required(root, "families")) : optional(root, "families");
             Map<ConstraintFamily, Material> families = fs == null ? (fn == null ? null : new EnumMap<>(ConstraintFamily.class)) : part(() -> families(fs));
-            Preset.Solver solver = part(() -> solver(required(root, "solver")));
+            SolverSettings solver = part(() -> solver(required(root, "solver")));
             if (cloth == null || families == null || solver == null) return null;
             return part(() -> rest(root, name, description, fabric, cloth, families, solver));
         }
 
         /** The parts that need the cloth and the solver: the colliders, self-collision, pin motions, wind and aerodynamics. */
         private Preset rest(Node root, String name, String description, Preset.FabricSpec fabric, Preset.Cloth cloth,
-                            Map<ConstraintFamily, Material> families, Preset.Solver solver) {
+                            Map<ConstraintFamily, Material> families, SolverSettings solver) {
             if (fabric != null && fabric.warp == null) {
                 if (!cloth.isMesh())
                     throw fail("fabric.warp", "is missing, and a grid cloth has no texture coordinates to take it from: give the warp direction, e.g. [1, 0, 0]");
@@ -383,7 +384,7 @@ public final class PresetLoader {
             if (ms != null) for (Node m : array(ms, Limits.MAX_PIN_MOTIONS)) motions.add(pinMotion(m, cloth));
             Node w = optional(root, "wind");
             long particles = cloth.mesh != null ? cloth.mesh.vertexCount() : (long) cloth.columns * cloth.rows;
-            String tooMuch = Limits.workProblem(particles, solver.iterations, solver.substeps, colliders, solver.type.isGlobal());
+            String tooMuch = Limits.workProblem(particles, solver.iterations(), solver.substeps(), colliders, solver.solver().isGlobal());
             // Judged on the values read, not on a field's stand-in for one out of range.
             if (tooMuch != null && found.isEmpty()) throw fail("solver", tooMuch);
             return new Preset(file, name, description, cloth, families, solver, spheres, planes, solids, bodies, self, motions, w == null ? null : wind(w), fabric, aerodynamics(optional(root, "aerodynamics")));
@@ -621,7 +622,7 @@ public final class PresetLoader {
             return new Material(number(required(n, "stiffness"), Limits.STIFFNESS), number(required(n, "compliance"), Limits.COMPLIANCE));
         }
 
-        Preset.Solver solver(Node n) {
+        SolverSettings solver(Node n) {
             object(n, Set.of("mode", "iterations", "substeps", "dt", "mullerCorrection", "gravity", "damping", "type"));
             ConstraintMode mode = choice(required(n, "mode"), ConstraintMode.class);
             int iterations = integer(required(n, "iterations"), Limits.ITERATIONS);
@@ -638,7 +639,8 @@ public final class PresetLoader {
             xpbdcloth.engine.SolverType type = t == null ? xpbdcloth.engine.SolverType.GAUSS_SEIDEL : solverType(t);
             if (mode == ConstraintMode.PBD && type != xpbdcloth.engine.SolverType.GAUSS_SEIDEL)
                 throw fail(t.path, "must be gauss-seidel in PBD mode (a global solve needs XPBD's compliance), was \"" + type.label() + "\"");
-            return new Preset.Solver(mode, iterations, substeps, dt, muller, gravity, damping, type);
+            return new SolverSettings().withModeAndSolver(mode, type).withIterations(iterations).withSubsteps(substeps).withTimestep(dt)
+                    .withMullerCorrection(muller).withGravity(gravity[0], gravity[1], gravity[2]).withDamping(damping);
         }
 
         /** "gauss-seidel", "jacobi-pcg" or "multigrid-pcg". */

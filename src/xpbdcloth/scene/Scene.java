@@ -40,11 +40,7 @@ public final class Scene {
         this.preset = preset;
         cloth = preset.cloth.isMesh() ? meshCloth(preset) : gridCloth(preset);
 
-        Preset.Solver s = preset.solver;
-        SolverSettings settings = new SolverSettings().modeAndSolver(s.mode, s.type).iterations(s.iterations).substeps(s.substeps)
-                .timestep(s.dt).mullerCorrection(s.mullerCorrection).gravity(s.gravity[0], s.gravity[1], s.gravity[2])
-                .damping(s.damping);
-        simulation = cloth.simulation(settings);
+        simulation = cloth.simulation(preset.solver);
         if (preset.fabric != null) {
             Preset.FabricSpec f = preset.fabric;
             double[] warp = f.warp != null ? f.warp : FabricConstraints.warpFromTextureCoordinates(cloth.particles(), cloth.triangles(), preset.cloth.mesh.triangleUVs());

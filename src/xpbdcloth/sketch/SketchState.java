@@ -50,10 +50,11 @@ public final class SketchState {
     private boolean sideBySide;
 
     /**
-     * The solver parameters every running scene shares: one engine settings object, validated by its own
-     * setters, copied into each scene (the side-by-side pair overrides only the mode).
+     * The solver parameters every running scene shares: the preset's, as the keys have replaced them (a
+     * value, validated when made; each running simulation is given it whole, the side-by-side pair with
+     * its own mode).
      */
-    private final SolverSettings shared = new SolverSettings();
+    private SolverSettings shared = new SolverSettings();
     /** The spring families' materials now: the preset's, as the keys and a fit have changed them (values, never edited in place). */
     private final Map<ConstraintFamily, Material> materials = new EnumMap<>(ConstraintFamily.class);
     private int familyChoice;
@@ -83,8 +84,7 @@ public final class SketchState {
     private void use(Preset p) {
         Scene fresh = Scene.of(p); // builds or throws before anything here changes
         preset = p;
-        shared.modeAndSolver(p.solver.mode, p.solver.type).iterations(p.solver.iterations)
-                .substeps(p.solver.substeps).timestep(p.solver.dt).mullerCorrection(p.solver.mullerCorrection);
+        shared = p.solver.withThreads(threads);
         fabric = p.fabric == null ? null : p.fabric.fabric;
         materials.clear();
         materials.putAll(p.families);
@@ -107,14 +107,11 @@ public final class SketchState {
         right = Scene.of(preset);
     }
 
-    /** Pushes the shared parameters into every running scene (modes: the pair is PBD left, XPBD right). */
+    /** Gives every running scene the shared settings and the keys' materials, wind and contacts (the pair: PBD left, XPBD right). */
     private void applyAll() {
         for (Scene s : running()) {
-            SolverSettings st = s.simulation().settings();
-            ConstraintMode m = s == left ? ConstraintMode.PBD : s == right ? ConstraintMode.XPBD : shared.mode();
-            st.iterations(shared.iterations()).substeps(shared.substeps()).timestep(shared.timestep())
-                    .mullerCorrection(shared.mullerCorrection()).threads(threads)
-                    .modeAndSolver(m, m == ConstraintMode.PBD ? SolverType.GAUSS_SEIDEL : shared.solver());
+            s.simulation().settings(s == left ? shared.withModeAndSolver(ConstraintMode.PBD, SolverType.GAUSS_SEIDEL)
+                    : s == right ? shared.withMode(ConstraintMode.XPBD) : shared);
             materials.forEach(s.simulation()::setMaterial);
             if (fabric != null && s.fabric() != fabric) s.useFabric(fabric);
             s.setWind(windOn);
@@ -163,7 +160,7 @@ public final class SketchState {
     public void toggleMode() {
         if (sideBySide) { say("side by side shows both: PBD left, XPBD right"); return; }
         try {
-            shared.mode(shared.mode() == ConstraintMode.PBD ? ConstraintMode.XPBD : ConstraintMode.PBD);
+            shared = shared.withMode(shared.mode() == ConstraintMode.PBD ? ConstraintMode.XPBD : ConstraintMode.PBD);
         } catch (IllegalArgumentException refused) { // the engine's rule: PBD needs Gauss–Seidel
             error("PBD runs on Gauss-Seidel only (its k is defined per projection): press v for gauss-seidel first");
             return;
@@ -173,7 +170,7 @@ public final class SketchState {
     }
 
     public void toggleMuller() {
-        shared.mullerCorrection(!shared.mullerCorrection());
+        shared = shared.withMullerCorrection(!shared.mullerCorrection());
         applyAll();
         say(shared.mullerCorrection() ? "PBD: Müller's k' = 1-(1-k)^(1/n)" : "PBD: raw k every sweep");
     }
@@ -187,7 +184,7 @@ public final class SketchState {
         SolverType next = all[(shared.solver().ordinal() + 1) % all.length];
         if (refusedAsTooMuchWork(shared.iterations(), shared.substeps(), next, "solver " + next.label())) return;
         try {
-            shared.solver(next);
+            shared = shared.withSolver(next);
         } catch (IllegalArgumentException refused) { // the engine's rule: a global solve needs XPBD
             error("PBD mode" + unchanged);
             return;
@@ -202,14 +199,14 @@ public final class SketchState {
     public void changeIterations(int delta) {
         int next = (int) Limits.ITERATIONS.clamp(shared.iterations() + delta);
         if (refusedAsTooMuchWork(next, shared.substeps(), shared.solver(), next + " iterations")) return;
-        shared.iterations(next);
+        shared = shared.withIterations(next);
         applyAll();
     }
 
     public void changeSubsteps(int delta) {
         int next = (int) Limits.SUBSTEPS.clamp(shared.substeps() + delta);
         if (refusedAsTooMuchWork(shared.iterations(), next, shared.solver(), next + " substeps")) return;
-        shared.substeps(next);
+        shared = shared.withSubsteps(next);
         applyAll();
     }
 
@@ -231,7 +228,7 @@ public final class SketchState {
     public void cycleTimestep() {
         int next = 0;
         for (int i = 0; i < TIMESTEPS.length; i++) if (Math.abs(TIMESTEPS[i] - shared.timestep()) < 1e-12) next = (i + 1) % TIMESTEPS.length;
-        shared.timestep(TIMESTEPS[next]);
+        shared = shared.withTimestep(TIMESTEPS[next]);
         applyAll();
         say(String.format("dt = 1/%.0f s", 1 / shared.timestep()));
     }

@@ -66,8 +66,8 @@ public final class Bench {
                 .family(ConstraintFamily.STRUCTURAL, 1.0, 1e-7).pinTopCorners().build();
         Particles p = cloth.particles();
         for (int i = 0; i < p.count(); i++) p.setMass(i, 1e-4);
-        SolverSettings s = new SolverSettings().mode(ConstraintMode.XPBD).iterations(10).substeps(1)
-                .timestep(1 / 60.0).gravity(0, -9.81, 0).order(order).threads(threads);
+        SolverSettings s = new SolverSettings().withMode(ConstraintMode.XPBD).withIterations(10).withSubsteps(1)
+                .withTimestep(1 / 60.0).withGravity(0, -9.81, 0).withOrder(order).withThreads(threads);
         return cloth.simulation(s);
     }
 
@@ -81,8 +81,8 @@ public final class Bench {
         Cloth cloth = new ClothBuilder().resolution(n, n).size(0.01 * (n - 1), 0.01 * (n - 1))
                 .arealDensity(0.2).pinTopCorners().build();
         Particles p = cloth.particles();
-        Simulation sim = new Simulation(p, new SolverSettings().mode(ConstraintMode.XPBD).iterations(1).substeps(15)
-                .timestep(1 / 60.0).order(ConstraintOrder.COLOURED));
+        Simulation sim = new Simulation(p, new SolverSettings().withMode(ConstraintMode.XPBD).withIterations(1).withSubsteps(15)
+                .withTimestep(1 / 60.0).withOrder(ConstraintOrder.COLOURED));
         int[] t = cloth.triangles();
         Map<Long, Integer> firstOpposite = new HashMap<>();
         DistanceBlock stretch = new DistanceBlock(ConstraintFamily.STRUCTURAL, t.length / 2); // α = 0
@@ -104,8 +104,8 @@ public final class Bench {
     static Simulation allFamilies(int n, int threads) {
         Cloth cloth = new ClothBuilder().resolution(n, n).size(1, 1).origin(0, 1.6, 0).arealDensity(0.2).pinTopCorners()
                 .family(ConstraintFamily.STRUCTURAL, 1, 1e-6).family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2).build();
-        Simulation sim = cloth.simulation(new SolverSettings().mode(ConstraintMode.XPBD).iterations(2).substeps(10)
-                .timestep(0.02).order(ConstraintOrder.COLOURED).threads(threads));
+        Simulation sim = cloth.simulation(new SolverSettings().withMode(ConstraintMode.XPBD).withIterations(2).withSubsteps(10)
+                .withTimestep(0.02).withOrder(ConstraintOrder.COLOURED).withThreads(threads));
         sim.add(new Sphere(SpherePath.oscillation(0, 1.1, 0.1, 0, 0, 0.15, 0.5), 0.2, 0.01, 0.5, 0.35));
         return sim;
     }
@@ -116,8 +116,8 @@ public final class Bench {
      */
     static Simulation fabric(int n) {
         Cloth cloth = new ClothBuilder().resolution(n, n).size(1, 1).origin(0, 1.6, 0).arealDensity(0.2).pinTopCorners().build();
-        Simulation sim = cloth.simulation(new SolverSettings().mode(ConstraintMode.XPBD).iterations(2).substeps(10)
-                .timestep(0.02).order(ConstraintOrder.COLOURED));
+        Simulation sim = cloth.simulation(new SolverSettings().withMode(ConstraintMode.XPBD).withIterations(2).withSubsteps(10)
+                .withTimestep(0.02).withOrder(ConstraintOrder.COLOURED));
         for (xpbdcloth.engine.ConstraintBlock b : xpbdcloth.fabric.FabricConstraints.build(cloth.particles(), cloth.triangles(), new double[] {1, 0, 0},
                 new xpbdcloth.engine.OrthotropicMaterial(2000, 800, 0.25, 30), 1e-5, true)) sim.add(b);
         return sim;
@@ -126,8 +126,8 @@ public final class Bench {
     /** The same fabric solved by vertex block descent, 2 × 10, without tethers (it needs none to hold the material). */
     static Simulation fabricDescent(int n) {
         Cloth cloth = new ClothBuilder().resolution(n, n).size(1, 1).origin(0, 1.6, 0).arealDensity(0.2).pinTopCorners().build();
-        Simulation sim = cloth.simulation(new SolverSettings().mode(ConstraintMode.XPBD).solver(SolverType.VERTEX_BLOCK_DESCENT).iterations(2).substeps(10)
-                .timestep(0.02));
+        Simulation sim = cloth.simulation(new SolverSettings().withMode(ConstraintMode.XPBD).withSolver(SolverType.VERTEX_BLOCK_DESCENT).withIterations(2).withSubsteps(10)
+                .withTimestep(0.02));
         for (xpbdcloth.engine.ConstraintBlock b : xpbdcloth.fabric.FabricConstraints.build(cloth.particles(), cloth.triangles(), new double[] {1, 0, 0},
                 new xpbdcloth.engine.OrthotropicMaterial(2000, 800, 0.25, 30), 1e-5, false)) sim.add(b);
         return sim;
@@ -136,7 +136,7 @@ public final class Bench {
     /** The `hanging` scene as shipped (32², all three families, 10 substeps × 2 iterations), under one solver. */
     static Simulation hanging(SolverType type) {
         Simulation sim = xpbdcloth.scene.Scene.builtIn("hanging").simulation();
-        sim.settings().solver(type);
+        sim.settings(sim.settings().withSolver(type));
         return sim;
     }
 

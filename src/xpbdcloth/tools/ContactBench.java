@@ -45,7 +45,7 @@ final class ContactBench {
     static String measure(String name, int n, boolean self, int threads) {
         Scene scene = scene(name, n, self);
         Simulation sim = scene.simulation();
-        sim.settings().threads(threads);
+        sim.settings(sim.settings().withThreads(threads));
         int[] triangles = scene.cloth().triangles();
         com.sun.management.ThreadMXBean bean = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
         double total = 0, contact = 0, solve = 0;

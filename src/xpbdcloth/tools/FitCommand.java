@@ -179,7 +179,7 @@ final class FitCommand implements Callable<Integer> {
 
     /** Whether "damping" is among the params (or, by default, for a trajectory of a damped scene). */
     private boolean fitsDamping(Preset preset, boolean dynamic) {
-        if (params == null) return dynamic && preset.solver.damping > 0;
+        if (params == null) return dynamic && preset.solver.damping() > 0;
         boolean named = params.stream().anyMatch(p -> p.trim().equalsIgnoreCase("damping"));
         if (named && !dynamic)
             throw new IllegalArgumentException("params names damping, which a rest shape does not depend on: observe a trajectory (a folder of frames) to fit it");

@@ -84,15 +84,15 @@ public final class Fuzz implements Callable<Integer> {
                 }
                 if (grab != null && r.nextInt(10) == 0) { sim.release(grab); grab = null; }
                 if (r.nextInt(20) == 0) {
-                    ConstraintMode before = s.mode();
-                    String refused = switchMode(s);
+                    ConstraintMode before = sim.settings().mode();
+                    String refused = switchMode(sim);
                     if (refused != null) return "seed " + seed + ": " + refused;
-                    if (s.mode() != before) judged = false;
+                    if (sim.settings().mode() != before) judged = false;
                 }
                 if (r.nextInt(20) == 0) {
                     SolverType to = SolverType.values()[r.nextInt(3)];
-                    if (to != SolverType.GAUSS_SEIDEL) capForGlobal(s);
-                    String refused = switchSolver(s, to);
+                    if (to != SolverType.GAUSS_SEIDEL) sim.settings(capForGlobal(sim.settings()));
+                    String refused = switchSolver(sim, to);
                     if (refused != null) return "seed " + seed + ": " + refused;
                 }
                 sim.step();
@@ -135,36 +135,38 @@ public final class Fuzz implements Callable<Integer> {
     }
 
     /** A global iteration is a whole linear solve: at most 10 × 10 of them per step, so a case costs < 1 s. */
-    static void capForGlobal(SolverSettings s) {
-        s.iterations(Math.min(s.iterations(), 10)).substeps(Math.min(s.substeps(), 10));
+    static SolverSettings capForGlobal(SolverSettings s) {
+        return s.withIterations(Math.min(s.iterations(), 10)).withSubsteps(Math.min(s.substeps(), 10));
     }
 
-    /** PBD ⇄ XPBD; to PBD under a global solver must be refused. Returns why the refusal was wrong, or null. */
-    static String switchMode(SolverSettings s) {
+    /** PBD ⇄ XPBD; to PBD under a global solver must be refused, naming the mode. Returns why the refusal was wrong, or null. */
+    static String switchMode(Simulation sim) {
+        SolverSettings s = sim.settings();
         ConstraintMode to = s.mode() == ConstraintMode.PBD ? ConstraintMode.XPBD : ConstraintMode.PBD;
         if (to == ConstraintMode.PBD && s.solver() != SolverType.GAUSS_SEIDEL) {
             try {
-                s.mode(to);
+                s.withMode(to);
                 return "PBD under " + s.solver().label() + " was accepted";
             } catch (IllegalArgumentException e) {
-                return e.getMessage().startsWith("mode") && s.mode() == ConstraintMode.XPBD ? null : "refusal of PBD: " + e.getMessage();
+                return e.getMessage().startsWith("mode") ? null : "refusal of PBD: " + e.getMessage();
             }
         }
-        s.mode(to);
+        sim.settings(s.withMode(to));
         return null;
     }
 
-    /** Switches the solver; a global solver in PBD mode must be refused. Returns why the refusal was wrong, or null. */
-    static String switchSolver(SolverSettings s, SolverType to) {
+    /** Switches the solver; a global solver in PBD mode must be refused, naming the solver. Returns why the refusal was wrong, or null. */
+    static String switchSolver(Simulation sim, SolverType to) {
+        SolverSettings s = sim.settings();
         if (to != SolverType.GAUSS_SEIDEL && s.mode() == ConstraintMode.PBD) {
             try {
-                s.solver(to);
+                s.withSolver(to);
                 return to.label() + " in PBD mode was accepted";
             } catch (IllegalArgumentException e) {
-                return e.getMessage().startsWith("solver") && s.solver() == SolverType.GAUSS_SEIDEL ? null : "refusal of " + to.label() + ": " + e.getMessage();
+                return e.getMessage().startsWith("solver") ? null : "refusal of " + to.label() + ": " + e.getMessage();
             }
         }
-        s.solver(to);
+        sim.settings(s.withSolver(to));
         return null;
     }
 
@@ -232,18 +234,18 @@ public final class Fuzz implements Callable<Integer> {
         ConstraintMode mode = r.nextBoolean() ? ConstraintMode.PBD : ConstraintMode.XPBD;
         if (solver != SolverType.GAUSS_SEIDEL) mode = ConstraintMode.XPBD;
         SolverSettings s = new SolverSettings()
-                .mode(mode)
-                .solver(solver)
+                .withMode(mode)
+                .withSolver(solver)
                 // Up to 1000 sweeps or up to 100 substeps, not both, so a case costs milliseconds.
-                .iterations(illegal != null && illegal[0].equals("iterations") ? 0 : r.nextInt(20) == 0 ? 200 + r.nextInt(800) : 1 + r.nextInt(30))
-                .substeps(illegal != null && illegal[0].equals("substeps") ? -3 : 1 + r.nextInt(r.nextInt(10) == 0 ? 100 : 10))
-                .timestep(bad(illegal, "dt", logUniform(r, 1e-5, 0.1)))
-                .mullerCorrection(r.nextBoolean())
-                .gravity(0, bad(illegal, "gravity.y", -9.81), 0)
-                .damping(bad(illegal, "damping", r.nextInt(4) == 0 ? logUniform(r, 1e-3, EngineRange.MAX_DAMPING) : 0));
-        if (s.iterations() > 30) s.substeps(1);
-        else if (s.substeps() > 10) s.iterations(Math.min(s.iterations(), 3));
-        if (solver != SolverType.GAUSS_SEIDEL) capForGlobal(s);
+                .withIterations(illegal != null && illegal[0].equals("iterations") ? 0 : r.nextInt(20) == 0 ? 200 + r.nextInt(800) : 1 + r.nextInt(30))
+                .withSubsteps(illegal != null && illegal[0].equals("substeps") ? -3 : 1 + r.nextInt(r.nextInt(10) == 0 ? 100 : 10))
+                .withTimestep(bad(illegal, "dt", logUniform(r, 1e-5, 0.1)))
+                .withMullerCorrection(r.nextBoolean())
+                .withGravity(0, bad(illegal, "gravity.y", -9.81), 0)
+                .withDamping(bad(illegal, "damping", r.nextInt(4) == 0 ? logUniform(r, 1e-3, EngineRange.MAX_DAMPING) : 0));
+        if (s.iterations() > 30) s = s.withSubsteps(1);
+        else if (s.substeps() > 10) s = s.withIterations(Math.min(s.iterations(), 3));
+        if (solver != SolverType.GAUSS_SEIDEL) s = capForGlobal(s);
         Simulation sim = cloth.simulation(s);
         int spheres = r.nextInt(3);
         for (int k = 0; k < spheres; k++) {
@@ -294,7 +296,7 @@ public final class Fuzz implements Callable<Integer> {
             double u = Math.sqrt(wind.velocityX() * wind.velocityX() + wind.velocityY() * wind.velocityY() + wind.velocityZ() * wind.velocityZ());
             drive[0] = Math.max(drive[0], u * (1 + wind.gust()));
         }
-        if (r.nextInt(10) == 0) s.threads(2);
+        if (r.nextInt(10) == 0) sim.settings(s.withThreads(2));
         if (illegal == null) drive[0] = Math.max(drive[0], addExtras(new Random(extrasSeed(r)), cloth, sim));
         if (illegal != null && illegal[0].equals("radius") && spheres == 0) new Sphere(SpherePath.fixed(0, 0, 0), 0, 0, 0, 0);
         if (illegal != null && illegal[0].equals("staticFriction") && spheres == 0) new Sphere(SpherePath.fixed(0, 0, 0), 1, 0, -0.5, 0);

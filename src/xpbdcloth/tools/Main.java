@@ -190,7 +190,7 @@ public final class Main implements Callable<Integer> {
 
         /** Steps per recorded frame at --fps (or the scene's own rate), having said what is recorded where and at what rate. */
         private int announce(xpbdcloth.scene.Preset preset, String what, File into) {
-            double dt = preset.solver.dt;
+            double dt = preset.solver.timestep();
             int steps = fps == null ? xpbdcloth.scene.ObjExport.stepsPerFrame(dt) : xpbdcloth.scene.ObjExport.stepsPerFrame(dt, fps);
             System.out.printf(java.util.Locale.ROOT, "recording %d %s of %s into %s: %.6g frames per second of simulated time (a frame every %d step%s of %.4g ms)%n",
                     frames, what, sketch.scene, into, 1 / (steps * dt), steps, steps == 1 ? "" : "s", 1000 * dt);
@@ -211,7 +211,7 @@ public final class Main implements Callable<Integer> {
             xpbdcloth.scene.Scene scene = xpbdcloth.scene.Scene.of(preset);
             int n = xpbdcloth.scene.ObjExport.recordSequence(scene, frames, obj.toPath(), steps);
             System.out.printf(java.util.Locale.ROOT, "wrote %d OBJ frames (%d vertices each; import at %.6g fps to play in real time) in %.1f s%n",
-                    n, preset.cloth.isMesh() ? preset.cloth.mesh.vertexCount() : preset.cloth.columns * preset.cloth.rows, 1 / (steps * preset.solver.dt), (System.nanoTime() - t0) / 1e9);
+                    n, preset.cloth.isMesh() ? preset.cloth.mesh.vertexCount() : preset.cloth.columns * preset.cloth.rows, 1 / (steps * preset.solver.timestep()), (System.nanoTime() - t0) / 1e9);
             System.out.println("last step: " + xpbdcloth.engine.StepBalance.verdict(scene.simulation().balance()));
             return 0;
         }

@@ -18,7 +18,7 @@ class AerodynamicsTest {
                 .arealDensity(density).family(ConstraintFamily.STRUCTURAL, 1, 1e-8).family(ConstraintFamily.SHEAR, 1, 1e-6)
                 .family(ConstraintFamily.BEND, 1, 1e-6).build();
         // Short steps: the exact-decay scale takes a fraction x/2 off the drag in steady fall (see the class).
-        Simulation sim = cloth.simulation(new SolverSettings().iterations(10).substeps(1).timestep(0.0025).gravity(0, -9.81, 0));
+        Simulation sim = cloth.simulation(new SolverSettings().withIterations(10).withSubsteps(1).withTimestep(0.0025).withGravity(0, -9.81, 0));
         // No lift: a falling plate with lift tumbles (as real paper does), and the closed form is for face-on.
         sim.add(new Aerodynamics(cloth.triangles(), Aerodynamics.AIR_DENSITY, cd, 0));
         for (int s = 0; s < 800; s++) sim.step();

@@ -16,7 +16,7 @@ class AttachmentGlideTest {
     @Test
     void aParticleLetGoLeavesWithTheHandsVelocity() {
         Particles p = new Particles(1);
-        Simulation sim = new Simulation(p, new SolverSettings().gravity(0, 0, 0).timestep(DT).substeps(10).iterations(1));
+        Simulation sim = new Simulation(p, new SolverSettings().withGravity(0, 0, 0).withTimestep(DT).withSubsteps(10).withIterations(1));
         AttachmentConstraint hand = sim.attach(0, 0, 0, 0);
         for (int step = 1; step <= 5; step++) {
             hand.moveTarget(step * STEP_MOVE, 0, 0);
@@ -36,7 +36,7 @@ class AttachmentGlideTest {
     void aStillTargetHoldsItsParticleWhereItWas() {
         Particles p = new Particles(1);
         p.setPosition(0, 0.3, -0.2, 0.1);
-        Simulation sim = new Simulation(p, new SolverSettings().timestep(DT).substeps(4).iterations(2));
+        Simulation sim = new Simulation(p, new SolverSettings().withTimestep(DT).withSubsteps(4).withIterations(2));
         sim.attach(0, 0.3, -0.2, 0.1);
         for (int step = 0; step < 50; step++) sim.step();
         assertEquals(-0.2, p.y(0), 1e-12, "held against gravity by a hard attachment");

@@ -33,7 +33,7 @@ class ColouredOrderTest {
         double[][] out = new double[3][];
         for (int t = 1; t <= 3; t++) {
             Simulation sim = Rigs.clothWithSphere(true);
-            sim.settings().order(ConstraintOrder.COLOURED).threads(t);
+            sim.settings(sim.settings().withOrder(ConstraintOrder.COLOURED).withThreads(t));
             for (int s = 0; s < 200; s++) sim.step();
             sim.close();
             out[t - 1] = sim.particles().positions().clone();
@@ -45,7 +45,7 @@ class ColouredOrderTest {
     /** Colouring changes the path, not the physics: the XPBD chain still settles on Hooke's law. */
     @Test
     void colouredOrderKeepsTheClosedForm() {
-        SolverSettings s = new SolverSettings().mode(ConstraintMode.XPBD).iterations(50).timestep(1 / 60.0).order(ConstraintOrder.COLOURED);
+        SolverSettings s = new SolverSettings().withMode(ConstraintMode.XPBD).withIterations(50).withTimestep(1 / 60.0).withOrder(ConstraintOrder.COLOURED);
         Simulation sim = Rigs.chain(10, 0.01, 0.1, s, 1, 1e-2);
         Rigs.settle(sim, 1e-10, 100_000);
         Particles p = sim.particles();
@@ -58,8 +58,8 @@ class ColouredOrderTest {
     @Test
     void threadCountIsValidated() {
         SolverSettings s = new SolverSettings();
-        ValidationTest.rejects("threads", "0", () -> s.threads(0));
-        ValidationTest.rejects("threads", "65", () -> s.threads(65));
-        assertEquals(ConstraintOrder.COLOURED, s.threads(2).order(), "more than one thread implies the coloured order");
+        ValidationTest.rejects("threads", "0", () -> s.withThreads(0));
+        ValidationTest.rejects("threads", "65", () -> s.withThreads(65));
+        assertEquals(ConstraintOrder.COLOURED, s.withThreads(2).order(), "more than one thread implies the coloured order");
     }
 }

@@ -28,7 +28,7 @@ class ConservationTest {
             Random rnd = new Random(7);
             for (int i = 0; i < p.count(); i++)
                 p.setVelocity(i, rnd.nextGaussian(), rnd.nextGaussian(), rnd.nextGaussian());
-            Simulation sim = cloth.simulation(new SolverSettings().mode(mode).gravity(0, 0, 0).iterations(4).timestep(1 / 60.0));
+            Simulation sim = cloth.simulation(new SolverSettings().withMode(mode).withGravity(0, 0, 0).withIterations(4).withTimestep(1 / 60.0));
             double[] before = {Metrics.momentum(p, 0), Metrics.momentum(p, 1), Metrics.momentum(p, 2)};
             double scale = 0;
             for (int i = 0; i < p.count(); i++)
@@ -51,7 +51,7 @@ class ConservationTest {
             Particles p = cloth.particles();
             int left = cloth.index(0, 0), right = cloth.index(0, 15);
             double lx = p.x(left), ly = p.y(left), rx = p.x(right), ry = p.y(right);
-            Simulation sim = cloth.simulation(new SolverSettings().mode(mode));
+            Simulation sim = cloth.simulation(new SolverSettings().withMode(mode));
             for (int s = 0; s < 1000; s++) {
                 sim.step();
                 assertEquals(lx, p.x(left), 0.0);
@@ -69,7 +69,7 @@ class ConservationTest {
     void freeFallGainsGDtPerStep() {
         Particles p = new Particles(2);
         p.setPosition(1, 1, 0, 0);
-        Simulation sim = new Simulation(p, new SolverSettings().timestep(0.01).substeps(3));
+        Simulation sim = new Simulation(p, new SolverSettings().withTimestep(0.01).withSubsteps(3));
         for (int s = 1; s <= 100; s++) {
             double before = p.vy(0);
             sim.step();

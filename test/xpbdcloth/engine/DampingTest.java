@@ -16,7 +16,7 @@ class DampingTest {
             for (int substeps : new int[] {1, 4}) {
                 Particles p = new Particles(1);
                 p.setVelocity(0, v0, 0, 0);
-                Simulation sim = new Simulation(p, new SolverSettings().gravity(0, 0, 0).damping(c).timestep(dt).substeps(substeps));
+                Simulation sim = new Simulation(p, new SolverSettings().withGravity(0, 0, 0).withDamping(c).withTimestep(dt).withSubsteps(substeps));
                 int steps = (int) Math.round(T / dt);
                 for (int s = 0; s < steps; s++) sim.step();
                 assertEquals(expected, p.vx(0), 1e-11 * v0, "dt " + dt + ", substeps " + substeps); // 960 roundings at most
@@ -33,7 +33,7 @@ class DampingTest {
         Particles p = new Particles(2);
         p.setPosition(1, 0.1, 0, 0);
         p.pin(0);
-        Simulation sim = new Simulation(p, new SolverSettings().damping(50));
+        Simulation sim = new Simulation(p, new SolverSettings().withDamping(50));
         sim.add((Kinematics) (ps, t) -> ps.moveKinematic(0, t, 0, 0)); // 1 m/s along x
         for (int s = 0; s < 10; s++) sim.step();
         assertEquals(1.0, p.vx(0), 1e-9, "the scripted pin moves at its own speed");
@@ -42,11 +42,11 @@ class DampingTest {
     @Test
     void dampingOutsideItsRangeIsRefusedNamingIt() {
         SolverSettings s = new SolverSettings();
-        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> s.damping(-1));
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> s.withDamping(-1));
         assertTrue(e.getMessage().startsWith("damping") && e.getMessage().endsWith("was -1.0"), e.getMessage());
-        assertThrows(IllegalArgumentException.class, () -> s.damping(Double.NaN));
-        assertThrows(IllegalArgumentException.class, () -> s.damping(2 * EngineRange.MAX_DAMPING));
+        assertThrows(IllegalArgumentException.class, () -> s.withDamping(Double.NaN));
+        assertThrows(IllegalArgumentException.class, () -> s.withDamping(2 * EngineRange.MAX_DAMPING));
         assertEquals(0, s.damping());
-        assertEquals(3.0, s.copy().damping(3).damping());
+        assertEquals(3.0, s.withDamping(3).damping());
     }
 }

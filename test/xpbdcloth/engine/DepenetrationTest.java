@@ -18,7 +18,7 @@ class DepenetrationTest {
     static Simulation cloth() {
         Cloth cloth = new ClothBuilder().resolution(8, 8).size(1, 1).origin(0, 1.6, 0).arealDensity(0.2)
                 .family(ConstraintFamily.STRUCTURAL, 1, 1e-6).build();
-        return cloth.simulation(new SolverSettings().mode(ConstraintMode.XPBD).iterations(2).substeps(10).timestep(0.02).gravity(0, -9.81, 0));
+        return cloth.simulation(new SolverSettings().withMode(ConstraintMode.XPBD).withIterations(2).withSubsteps(10).withTimestep(0.02).withGravity(0, -9.81, 0));
     }
 
     /** Runs 3 s; returns the fastest mean speed of any particle over one step, m/s. */

@@ -18,7 +18,7 @@ class EnergyHonestyTest {
         for (ConstraintMode mode : ConstraintMode.values()) {
             Cloth c = new ClothBuilder().resolution(16, 16).size(1, 1).plane(ClothBuilder.Plane.HORIZONTAL).origin(0, 1, 0.5)
                     .arealDensity(0.2).family(ConstraintFamily.STRUCTURAL, 1, 1e-4).pinTopCorners().build();
-            Simulation sim = c.simulation(new SolverSettings().mode(mode).iterations(10).substeps(5).timestep(1 / 60.0));
+            Simulation sim = c.simulation(new SolverSettings().withMode(mode).withIterations(10).withSubsteps(5).withTimestep(1 / 60.0));
             double e0 = energy(sim), worst = -Double.MAX_VALUE;
             double scale = 0.2 * 9.81 * 1.0;
             for (int s = 0; s < 600; s++) {

@@ -35,12 +35,12 @@ class EngineRangeTest {
         refused("columns*rows", () -> new ClothBuilder().resolution(30000, 30000));
         refused("columns*rows", () -> new ClothBuilder().resolution(46341, 46341));
         SolverSettings s = new SolverSettings();
-        refused("dt", () -> s.timestep(1e-300));
-        refused("dt", () -> s.timestep(1e-155));
-        refused("gravity", () -> s.gravity(0, -1e200, 0));
-        refused("iterations", () -> s.iterations(Integer.MAX_VALUE));
-        refused("substeps", () -> s.substeps(Integer.MAX_VALUE));
-        refused("pcgMaxIterations", () -> s.pcgMaxIterations(Integer.MAX_VALUE));
+        refused("dt", () -> s.withTimestep(1e-300));
+        refused("dt", () -> s.withTimestep(1e-155));
+        refused("gravity", () -> s.withGravity(0, -1e200, 0));
+        refused("iterations", () -> s.withIterations(Integer.MAX_VALUE));
+        refused("substeps", () -> s.withSubsteps(Integer.MAX_VALUE));
+        refused("pcgMaxIterations", () -> s.withPcgMaxIterations(Integer.MAX_VALUE));
         Constraint c = new DistanceConstraint(ConstraintFamily.STRUCTURAL, 0, 1, 1);
         refused("compliance", () -> c.setCompliance(1e308));
         refused("radius", () -> new Sphere(SpherePath.fixed(0, 0, 0), 1e300, 0, 0, 0));
@@ -59,7 +59,7 @@ class EngineRangeTest {
             Cloth cloth = new ClothBuilder().resolution(6, 6).size(0.5, 0.5).totalMass(200 * edge[2]).pinTopCorners()
                     .family(ConstraintFamily.STRUCTURAL, 1, edge[1]).family(ConstraintFamily.SHEAR, 1, edge[1]).family(ConstraintFamily.BEND, 1, edge[1]).build();
             for (SolverType type : SolverType.values()) {
-                Simulation sim = cloth.simulation(new SolverSettings().timestep(edge[0]).gravity(0, -edge[3], 0).solver(type));
+                Simulation sim = cloth.simulation(new SolverSettings().withTimestep(edge[0]).withGravity(0, -edge[3], 0).withSolver(type));
                 for (int i = 0; i < 20; i++) sim.step();
                 assertTrue(Metrics.allFinite(cloth.particles()), type.label() + " at dt " + edge[0]);
             }

@@ -19,7 +19,7 @@ class ExtremeParametersTest {
                     .family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.2, 1e-2);
             cloth.accept(b);
             Cloth c = b.build();
-            SolverSettings s = new SolverSettings().mode(mode);
+            SolverSettings s = new SolverSettings().withMode(mode);
             solver.accept(s);
             Simulation sim = c.simulation(s);
             extra.accept(sim);
@@ -48,14 +48,14 @@ class ExtremeParametersTest {
     }
 
     @Test void iterationsAndSubsteps() {
-        check("iterations 1", NONE_B, s -> s.iterations(1), NONE_X, 1);
-        check("iterations 1000", NONE_B, s -> s.iterations(1000), NONE_X, 0.2);
-        check("substeps 100", NONE_B, s -> s.substeps(100), NONE_X, 0.2);
+        check("iterations 1", NONE_B, s -> s.withIterations(1), NONE_X, 1);
+        check("iterations 1000", NONE_B, s -> s.withIterations(1000), NONE_X, 0.2);
+        check("substeps 100", NONE_B, s -> s.withSubsteps(100), NONE_X, 0.2);
     }
 
     @Test void timesteps() {
-        check("dt 1e-5", NONE_B, s -> s.timestep(1e-5), NONE_X, 0.01);
-        check("dt 0.1", NONE_B, s -> s.timestep(0.1), NONE_X, 1);
+        check("dt 1e-5", NONE_B, s -> s.withTimestep(1e-5), NONE_X, 0.01);
+        check("dt 0.1", NONE_B, s -> s.withTimestep(0.1), NONE_X, 1);
     }
 
     @Test void massesFromMicrogramsToTonnes() {

@@ -48,7 +48,7 @@ class GlobalSolverTest {
             Constraint[] cs = c.constraints().toArray(new Constraint[0]);
             GlobalSolver g = new GlobalSolver(ConstraintRows.of(cs), p.count(), multigrid, 1e-13, 10_000);
             SolverContext ctx = new SolverContext();
-            ctx.load(new SolverSettings().mode(ConstraintMode.XPBD), 1 / 60.0);
+            ctx.load(new SolverSettings().withMode(ConstraintMode.XPBD), 1 / 60.0);
             double[][][] sys = g.linearSystemForTest(p, ctx);
             double[] direct = denseSolve(sys[0], sys[1][0]), pcg = sys[2][0];
             double scale = 0;
@@ -62,12 +62,12 @@ class GlobalSolverTest {
     static double chainError(SolverType type, int iterations) {
         int links = 40;
         double alpha = 1e-4, m = 0.01, L = 0.05;
-        SolverSettings s = new SolverSettings().mode(ConstraintMode.XPBD).iterations(iterations).timestep(1 / 60.0).solver(type).pcgTolerance(1e-10).pcgMaxIterations(500);
+        SolverSettings s = new SolverSettings().withMode(ConstraintMode.XPBD).withIterations(iterations).withTimestep(1 / 60.0).withSolver(type).withPcgTolerance(1e-10).withPcgMaxIterations(500);
         Simulation sim = Rigs.chain(links, m, L, s, 1, alpha);
         int steps = 1200;
         for (int k = 0; k < steps; k++) {
             double u = Math.min(1, (k + 1.0) / (0.6 * steps));
-            s.gravity(0, -Rigs.G * u * u * (3 - 2 * u), 0);
+            sim.settings(s.withGravity(0, -Rigs.G * u * u * (3 - 2 * u), 0));
             sim.step();
         }
         Particles p = sim.particles();
@@ -111,11 +111,11 @@ class GlobalSolverTest {
                     .family(ConstraintFamily.STRUCTURAL, 1, 1e-4).family(ConstraintFamily.SHEAR, 1, 1e-3);
             for (int col = 0; col < 10; col++) b.pin(0, col);
             Cloth c = b.build();
-            Simulation sim = c.simulation(new SolverSettings().mode(ConstraintMode.XPBD).timestep(1 / 60.0)
-                    .solver(types[k]).iterations(k == 0 ? 300 : 4).pcgTolerance(1e-10).pcgMaxIterations(500));
+            Simulation sim = c.simulation(new SolverSettings().withMode(ConstraintMode.XPBD).withTimestep(1 / 60.0)
+                    .withSolver(types[k]).withIterations(k == 0 ? 300 : 4).withPcgTolerance(1e-10).withPcgMaxIterations(500));
             for (int s = 0; s < 1200; s++) {
                 double u = Math.min(1, (s + 1.0) / 720);
-                sim.settings().gravity(0, -Rigs.G * u * u * (3 - 2 * u), 0);
+                sim.settings(sim.settings().withGravity(0, -Rigs.G * u * u * (3 - 2 * u), 0));
                 sim.step();
             }
             out[k] = c.particles().positions().clone();
@@ -140,7 +140,7 @@ class GlobalSolverTest {
         for (int k = 0; k < 2; k++) {
             Cloth c = new ClothBuilder().resolution(32, 32).arealDensity(0.2).size(1, 1).origin(0, 1.6, 0).pinTopCorners()
                     .family(ConstraintFamily.STRUCTURAL, 1.0, 1e-6).family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2).build();
-            Simulation sim = c.simulation(new SolverSettings().substeps(10).solver(solvers[k]));
+            Simulation sim = c.simulation(new SolverSettings().withSubsteps(10).withSolver(solvers[k]));
             sim.add(new Sphere(SpherePath.fixed(0, 1.1, 0), 0.2, 0.01, 0.5, 0.35));
             for (int s = 0; s < 16; s++) {
                 sim.step();
@@ -164,7 +164,7 @@ class GlobalSolverTest {
         Cloth c = new ClothBuilder().resolution(32, 32).arealDensity(0.2).size(1, 1).origin(0, 1.6, 0).pinTopCorners()
                 .family(ConstraintFamily.STRUCTURAL, 1.0, 1e-6).family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2).build();
         for (int i = 0; i < c.particles().count(); i++) c.particles().setMass(i, 1e-9);
-        Simulation sim = c.simulation(new SolverSettings().substeps(10).solver(SolverType.JACOBI_PCG));
+        Simulation sim = c.simulation(new SolverSettings().withSubsteps(10).withSolver(SolverType.JACOBI_PCG));
         double peak = 0;
         for (int s = 0; s < 10; s++) {
             sim.step();
@@ -186,8 +186,8 @@ class GlobalSolverTest {
         for (int i = 0; i < p.count(); i++)
             if (!p.isPinned(i)) p.setPosition(i, p.x(i), p.y(i) + crumple / (res - 1) * (random.nextDouble() - 0.5), p.z(i));
         for (int i = 0; i < p.count(); i++) if (!p.isPinned(i)) p.setVelocity(i, 0, 3 * (p.z(i) + 0.5), -3 * (p.y(i) - 1));
-        Simulation sim = c.simulation(new SolverSettings().mode(ConstraintMode.XPBD).iterations(1).substeps(1).timestep(1 / 60.0)
-                .solver(type).pcgTolerance(1e-6).pcgMaxIterations(5000));
+        Simulation sim = c.simulation(new SolverSettings().withMode(ConstraintMode.XPBD).withIterations(1).withSubsteps(1).withTimestep(1 / 60.0)
+                .withSolver(type).withPcgTolerance(1e-6).withPcgMaxIterations(5000));
         sim.step();
         return sim.profile().lastPcgIterations();
     }

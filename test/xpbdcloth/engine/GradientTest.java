@@ -91,7 +91,7 @@ class GradientTest {
     @Test
     void projectionReducesViolation() {
         SolverContext ctx = new SolverContext();
-        ctx.load(new SolverSettings().mode(ConstraintMode.PBD).iterations(1), 0.01);
+        ctx.load(new SolverSettings().withMode(ConstraintMode.PBD).withIterations(1), 0.01);
         Function<Particles, Constraint[]> make = p -> new Constraint[] {
                 new DistanceConstraint(ConstraintFamily.STRUCTURAL, 0, 1, 0.3),
                 new ShearConstraint(ConstraintFamily.SHEAR, 0, 1, 2, 1.2),

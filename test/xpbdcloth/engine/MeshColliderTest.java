@@ -38,7 +38,7 @@ class MeshColliderTest {
     static Simulation lyingCloth(int n, double w, double x, double y, double z, SolverType solver) {
         Cloth c = new ClothBuilder().resolution(n, n).size(w, w).plane(ClothBuilder.Plane.HORIZONTAL).origin(x, y, z).arealDensity(0.2)
                 .family(ConstraintFamily.STRUCTURAL, 1, 1e-6).family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2).build();
-        return c.simulation(new SolverSettings().iterations(2).substeps(10).timestep(0.02).solver(solver));
+        return c.simulation(new SolverSettings().withIterations(2).withSubsteps(10).withTimestep(0.02).withSolver(solver));
     }
 
     static MeshCollider box(double cx, double cy, double cz, double ex, double ey, double ez, double muS, double muK) {

@@ -40,7 +40,7 @@ class MultigridOnTriangleMeshesTest {
 
     static SolverContext context() {
         SolverContext ctx = new SolverContext();
-        ctx.load(new SolverSettings().mode(ConstraintMode.XPBD), 1 / 60.0);
+        ctx.load(new SolverSettings().withMode(ConstraintMode.XPBD), 1 / 60.0);
         return ctx;
     }
 

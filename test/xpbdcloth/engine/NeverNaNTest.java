@@ -18,28 +18,26 @@ class NeverNaNTest {
 
     @Test
     void pbdWithAGlobalSolverIsRefusedBothWaysAndChangesNothing() {
-        SolverSettings s = new SolverSettings().mode(ConstraintMode.PBD);
-        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> s.solver(SolverType.JACOBI_PCG));
+        SolverSettings s = new SolverSettings().withMode(ConstraintMode.PBD);
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> s.withSolver(SolverType.JACOBI_PCG));
         assertTrue(e.getMessage().startsWith("solver must be gauss-seidel in PBD mode"), e.getMessage());
         assertTrue(e.getMessage().endsWith("was jacobi-pcg"), e.getMessage());
         assertEquals(SolverType.GAUSS_SEIDEL, s.solver());
 
-        SolverSettings t = new SolverSettings().solver(SolverType.MULTIGRID_PCG);
-        e = assertThrows(IllegalArgumentException.class, () -> t.mode(ConstraintMode.PBD));
+        SolverSettings t = new SolverSettings().withSolver(SolverType.MULTIGRID_PCG);
+        e = assertThrows(IllegalArgumentException.class, () -> t.withMode(ConstraintMode.PBD));
         assertTrue(e.getMessage().startsWith("mode must be XPBD while the solver is multigrid-pcg"), e.getMessage());
         assertTrue(e.getMessage().endsWith("was PBD"), e.getMessage());
         assertEquals(ConstraintMode.XPBD, t.mode());
 
         // Both at once, in one call, from either side: the pair is what is checked.
-        t.modeAndSolver(ConstraintMode.PBD, SolverType.GAUSS_SEIDEL);
-        assertEquals(ConstraintMode.PBD, t.mode());
-        assertEquals(SolverType.GAUSS_SEIDEL, t.solver());
-        t.modeAndSolver(ConstraintMode.XPBD, SolverType.VERTEX_BLOCK_DESCENT);
-        assertEquals(SolverType.VERTEX_BLOCK_DESCENT, t.solver());
-        e = assertThrows(IllegalArgumentException.class, () -> t.modeAndSolver(ConstraintMode.PBD, SolverType.JACOBI_PCG));
+        SolverSettings pbd = t.withModeAndSolver(ConstraintMode.PBD, SolverType.GAUSS_SEIDEL);
+        assertEquals(ConstraintMode.PBD, pbd.mode());
+        assertEquals(SolverType.GAUSS_SEIDEL, pbd.solver());
+        SolverSettings vbd = pbd.withModeAndSolver(ConstraintMode.XPBD, SolverType.VERTEX_BLOCK_DESCENT);
+        assertEquals(SolverType.VERTEX_BLOCK_DESCENT, vbd.solver());
+        e = assertThrows(IllegalArgumentException.class, () -> vbd.withModeAndSolver(ConstraintMode.PBD, SolverType.JACOBI_PCG));
         assertEquals("solver must be gauss-seidel in PBD mode (the other solvers need XPBD's compliance), was jacobi-pcg", e.getMessage());
-        assertEquals(ConstraintMode.XPBD, t.mode());
-        assertEquals(SolverType.VERTEX_BLOCK_DESCENT, t.solver());
     }
 
     /**
@@ -94,10 +92,10 @@ class NeverNaNTest {
     @org.junit.jupiter.params.ParameterizedTest
     @org.junit.jupiter.params.provider.ValueSource(strings = {"gauss-seidel", "coloured-2-threads", "jacobi-pcg", "vertex-block-descent"})
     void aStepThatGoesNonFiniteInTheSolveIsUndoneAndNamesItsFamily(String solve) {
-        SolverSettings s = new SolverSettings().substeps(3);
-        if (solve.equals("coloured-2-threads")) s.order(ConstraintOrder.COLOURED).threads(2);
-        if (solve.equals("jacobi-pcg")) s.solver(SolverType.JACOBI_PCG);
-        if (solve.equals("vertex-block-descent")) s.solver(SolverType.VERTEX_BLOCK_DESCENT);
+        SolverSettings s = new SolverSettings().withSubsteps(3);
+        if (solve.equals("coloured-2-threads")) s.withOrder(ConstraintOrder.COLOURED).withThreads(2);
+        if (solve.equals("jacobi-pcg")) s.withSolver(SolverType.JACOBI_PCG);
+        if (solve.equals("vertex-block-descent")) s.withSolver(SolverType.VERTEX_BLOCK_DESCENT);
         Simulation sim = hangingCloth(s);
         Poison poison = new Poison(20, 7);
         poison.sim = sim;
@@ -142,7 +140,7 @@ class NeverNaNTest {
         for (SolverType type : new SolverType[] {SolverType.JACOBI_PCG, SolverType.MULTIGRID_PCG}) {
             Simulation sim = new ClothBuilder().resolution(12, 12).size(0.6, 0.6).arealDensity(0.2).pinTopCorners()
                     .family(ConstraintFamily.STRUCTURAL, 1, 0).family(ConstraintFamily.SHEAR, 1, 0).family(ConstraintFamily.BEND, 1, 0)
-                    .build().simulation(new SolverSettings().solver(type).substeps(5));
+                    .build().simulation(new SolverSettings().withSolver(type).withSubsteps(5));
             double worst = 0;
             for (int k = 0; k < 100; k++) {
                 sim.step();
@@ -168,7 +166,7 @@ class NeverNaNTest {
         p.setPosition(2, 0, 1, 0);
         double m = 0.01, c = 3.6, dt = 0.05, u = 7, area = 0.5;
         for (int i = 0; i < 3; i++) p.setMass(i, m);
-        Simulation sim = new Simulation(p, new SolverSettings().gravity(0, 0, 0).timestep(dt));
+        Simulation sim = new Simulation(p, new SolverSettings().withGravity(0, 0, 0).withTimestep(dt));
         sim.add(new Wind(new int[] {0, 1, 2}, 0, 0, u, c, 0));
         sim.step();
         double x = dt * c * area / (3 * m);

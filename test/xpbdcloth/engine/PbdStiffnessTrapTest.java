@@ -13,7 +13,7 @@ class PbdStiffnessTrapTest {
     static final double M = 0.01, L = 0.05;
 
     static double stretch(int iterations, double dt, boolean muller, double k) {
-        SolverSettings s = new SolverSettings().mode(ConstraintMode.PBD).iterations(iterations).timestep(dt).mullerCorrection(muller);
+        SolverSettings s = new SolverSettings().withMode(ConstraintMode.PBD).withIterations(iterations).withTimestep(dt).withMullerCorrection(muller);
         Simulation sim = Rigs.chain(LINKS, M, L, s, k, 0);
         Rigs.settle(sim, 1e-9, 20_000);
         return Rigs.totalExtension(sim, LINKS, L) / (LINKS * L);
@@ -47,7 +47,7 @@ class PbdStiffnessTrapTest {
         double[] out = new double[2];
         int[] ns = {50, 200};
         for (int j = 0; j < 2; j++) {
-            SolverSettings s = new SolverSettings().mode(ConstraintMode.XPBD).iterations(ns[j]).timestep(1 / 60.0);
+            SolverSettings s = new SolverSettings().withMode(ConstraintMode.XPBD).withIterations(ns[j]).withTimestep(1 / 60.0);
             Simulation sim = Rigs.chain(LINKS, M, L, s, 1.0, alpha);
             Rigs.settle(sim, 1e-10, 200_000);
             out[j] = Rigs.totalExtension(sim, LINKS, L);

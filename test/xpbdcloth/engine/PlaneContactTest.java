@@ -37,7 +37,7 @@ class PlaneContactTest {
             double u = p.x(i), v = p.z(i);
             p.setPosition(i, u * tx + MARGIN * nx, u * ty + MARGIN * ny, v);
         }
-        Simulation sim = c.simulation(new SolverSettings().iterations(2).substeps(10).timestep(0.02));
+        Simulation sim = c.simulation(new SolverSettings().withIterations(2).withSubsteps(10).withTimestep(0.02));
         slope.addTo(sim, theta, staticFriction, kineticFriction);
         double start = centroidAlong(p, tx, ty);
         int steps = (int) Math.round(seconds / 0.02);
@@ -95,7 +95,7 @@ class PlaneContactTest {
     void aClothOnTheFloorComesToRestWithoutJitter() {
         Cloth c = new ClothBuilder().resolution(32, 32).size(1, 1).plane(ClothBuilder.Plane.HORIZONTAL).origin(0, 0.05, 0).arealDensity(0.2)
                 .family(ConstraintFamily.STRUCTURAL, 1, 1e-6).family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2).build();
-        Simulation sim = c.simulation(new SolverSettings().iterations(2).substeps(10).timestep(0.02));
+        Simulation sim = c.simulation(new SolverSettings().withIterations(2).withSubsteps(10).withTimestep(0.02));
         sim.add(Plane.floor(0, MARGIN, 0.5, 0.4));
         Particles p = c.particles();
         for (int s = 0; s < 450; s++) sim.step();

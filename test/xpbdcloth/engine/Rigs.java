@@ -46,7 +46,7 @@ final class Rigs {
                 .family(ConstraintFamily.STRUCTURAL, 1.0, 1e-6).family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2);
         if (spinning) b.size(1.2, 1.2).plane(ClothBuilder.Plane.HORIZONTAL).origin(0, 1.4, 0);
         else b.size(1, 1).origin(0, 1.6, 0).pinTopCorners();
-        Simulation sim = b.build().simulation(new SolverSettings().substeps(10));
+        Simulation sim = b.build().simulation(new SolverSettings().withSubsteps(10));
         if (spinning) sim.add(new Sphere(SpherePath.fixed(0, 0.9, 0), 0.3, 0.01, 0.8, 0.6).spin(0, 2, 0));
         else sim.add(new Sphere(SpherePath.linear(0, 1.05, 0.8, 0, 0, -0.25), 0.2, 0.01, 0.5, 0.35));
         return sim;

@@ -17,7 +17,7 @@ class SelfCollisionTest {
     static double closestNonNeighbours(boolean selfCollision) {
         Cloth c = new ClothBuilder().resolution(N, N).size(1, 1).origin(0, 1.02, 0).arealDensity(0.2)
                 .family(ConstraintFamily.STRUCTURAL, 1, 1e-6).family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2).build();
-        Simulation sim = c.simulation(new SolverSettings().iterations(2).substeps(10));
+        Simulation sim = c.simulation(new SolverSettings().withIterations(2).withSubsteps(10));
         sim.add(Plane.floor(0, 0.005, 0.6, 0.45));
         Particles p = c.particles();
         double[] rest = p.positions().clone();
@@ -56,7 +56,7 @@ class SelfCollisionTest {
     void theListIsKeptWhileNoParticleDriftsHalfTheSkin() {
         Cloth c = new ClothBuilder().resolution(24, 24).size(1, 1).plane(ClothBuilder.Plane.HORIZONTAL).origin(0, 0.3, 0).arealDensity(0.2)
                 .family(ConstraintFamily.STRUCTURAL, 1, 1e-6).build();
-        Simulation sim = c.simulation(new SolverSettings().iterations(2).substeps(10).damping(2));
+        Simulation sim = c.simulation(new SolverSettings().withIterations(2).withSubsteps(10).withDamping(2));
         sim.add(Plane.floor(0, 0.005, 0.6, 0.45));
         SelfCollision self = new SelfCollision(c.particles().positions().clone(), 0.02, 0.3, 0.2);
         sim.selfCollision(self);
@@ -79,7 +79,7 @@ class SelfCollisionTest {
         p.setVelocity(0, 2, 0, 0);
         p.setVelocity(1, -1, 0, 0.5);
         double[] rest = {-10, 0, 0, 10, 0, 0}; // far apart at rest: not neighbours
-        Simulation sim = new Simulation(p, new SolverSettings().gravity(0, 0, 0).iterations(2).substeps(4));
+        Simulation sim = new Simulation(p, new SolverSettings().withGravity(0, 0, 0).withIterations(2).withSubsteps(4));
         sim.selfCollision(new SelfCollision(rest, 0.02, 0.5, 0.4));
         double px = 1 * 2 + 3 * -1, pz = 3 * 0.5;
         for (int s = 0; s < 10; s++) {
@@ -95,7 +95,7 @@ class SelfCollisionTest {
     void steppingWithSelfCollisionAllocatesNothing() {
         Cloth c = new ClothBuilder().resolution(24, 24).size(1, 1).plane(ClothBuilder.Plane.HORIZONTAL).origin(0, 0.3, 0).arealDensity(0.2)
                 .family(ConstraintFamily.STRUCTURAL, 1, 1e-6).build();
-        Simulation sim = c.simulation(new SolverSettings().iterations(2).substeps(10));
+        Simulation sim = c.simulation(new SolverSettings().withIterations(2).withSubsteps(10));
         sim.add(Plane.floor(0, 0.005, 0.6, 0.45));
         sim.selfCollision(new SelfCollision(c.particles().positions().clone(), 0.02, 0.3, 0.2));
         for (int s = 0; s < 100; s++) sim.step(); // lying on the floor: the pairs' arrays are as large as they get

@@ -31,7 +31,7 @@ class ShearBendTest {
         if (withShear) b.family(ConstraintFamily.SHEAR, 1, 1e-7);
         for (int c = 0; c < 10; c++) b.pin(0, c);
         Cloth cloth = b.build();
-        Simulation sim = cloth.simulation(new SolverSettings().mode(mode).gravity(0, 0, 0).iterations(10).substeps(4));
+        Simulation sim = cloth.simulation(new SolverSettings().withMode(mode).withGravity(0, 0, 0).withIterations(10).withSubsteps(4));
         for (int s = 0; s < 300; s++) {
             for (int c = 0; c < 10; c++) cloth.particles().addForce(cloth.index(9, c), 0.02, 0, 0);
             sim.step();
@@ -59,7 +59,7 @@ class ShearBendTest {
         if (withBend) b.family(ConstraintFamily.BEND, 1, 0.1);
         for (int r = 0; r < 2; r++) { b.pin(r, 0); b.pin(r, 1); }
         Cloth cloth = b.build();
-        Simulation sim = cloth.simulation(new SolverSettings().mode(ConstraintMode.XPBD).iterations(iterations).timestep(1 / 60.0));
+        Simulation sim = cloth.simulation(new SolverSettings().withMode(ConstraintMode.XPBD).withIterations(iterations).withTimestep(1 / 60.0));
         for (int s = 0; s < 1200; s++) sim.step();
         return -cloth.particles().y(cloth.index(1, 9));
     }

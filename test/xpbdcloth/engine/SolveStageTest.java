@@ -10,7 +10,7 @@ class SolveStageTest {
     static Simulation cloth(SolverType type) {
         return new ClothBuilder().resolution(16, 16).size(0.6, 0.6).arealDensity(0.2).pinTopCorners()
                 .family(ConstraintFamily.STRUCTURAL, 1, 1e-6).build()
-                .simulation(new SolverSettings().solver(type).iterations(2).substeps(2));
+                .simulation(new SolverSettings().withSolver(type).withIterations(2).withSubsteps(2));
     }
 
     /**
@@ -43,7 +43,7 @@ class SolveStageTest {
         Simulation sim = cloth(SolverType.JACOBI_PCG);
         sim.step();
         assertTrue(sim.profile().lastPcgIterations() > 0);
-        sim.settings().solver(SolverType.GAUSS_SEIDEL);
+        sim.settings(sim.settings().withSolver(SolverType.GAUSS_SEIDEL));
         sim.step();
         assertEquals(0, sim.profile().lastPcgIterations());
     }
@@ -69,7 +69,7 @@ class SolveStageTest {
     void contactsAreFoundEachSubstep() {
         Simulation sim = new ClothBuilder().resolution(16, 16).size(0.8, 0.8).plane(ClothBuilder.Plane.HORIZONTAL)
                 .origin(0, 1.0, 0).arealDensity(0.2).family(ConstraintFamily.STRUCTURAL, 1, 1e-6).build()
-                .simulation(new SolverSettings().iterations(2).substeps(4));
+                .simulation(new SolverSettings().withIterations(2).withSubsteps(4));
         sim.add(new Sphere(SpherePath.fixed(0, 0.5, 0), 0.1, 0.01, 0.5, 0.4));
         sim.step();
         assertEquals(0, sim.profile().contactCount(), "the cloth starts 0.4 m above the sphere's top");

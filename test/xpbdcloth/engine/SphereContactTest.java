@@ -17,7 +17,7 @@ class SphereContactTest {
         Particles p = new Particles(1);
         double a = Math.toRadians(10);
         p.setPosition(0, R * Math.sin(a), R * Math.cos(a), 0);
-        Simulation sim = new Simulation(p, new SolverSettings().timestep(1 / 60.0).substeps(4));
+        Simulation sim = new Simulation(p, new SolverSettings().withTimestep(1 / 60.0).withSubsteps(4));
         sim.add(new Sphere(SpherePath.fixed(0, 0, 0), R, 0, mu, mu));
         for (int s = 0; s < 120; s++) sim.step();
         return Math.atan2(p.x(0), p.y(0)) - a;
@@ -41,7 +41,7 @@ class SphereContactTest {
         Particles p = new Particles(1);
         p.setPosition(0, 0, R, 0);
         double muK = 0.8;
-        Simulation sim = new Simulation(p, new SolverSettings().timestep(1 / 60.0).substeps(4));
+        Simulation sim = new Simulation(p, new SolverSettings().withTimestep(1 / 60.0).withSubsteps(4));
         sim.add(new Sphere(SpherePath.fixed(0, 0, 0), R, 0, 1.0, muK).spin(0, 0, 3));
         for (int s = 0; s < 6; s++) sim.step();
         double expected = -muK * 9.81 * 0.1;
@@ -55,7 +55,7 @@ class SphereContactTest {
     @Test
     void particleAtCentreIsPushedOutUp() {
         Particles p = new Particles(1);
-        Simulation sim = new Simulation(p, new SolverSettings().gravity(0, 0, 0));
+        Simulation sim = new Simulation(p, new SolverSettings().withGravity(0, 0, 0));
         sim.add(new Sphere(SpherePath.fixed(0, 0, 0), R, 0.01, 0.5, 0.5));
         sim.step();
         assertTrue(Metrics.allFinite(p));

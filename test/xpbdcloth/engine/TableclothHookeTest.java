@@ -41,8 +41,8 @@ class TableclothHookeTest {
         ClothMesh mesh = RoundTablecloth.generate(0.4, 4);
         Cloth cloth = new MeshClothBuilder(mesh).arealDensity(0.2).family(ConstraintFamily.STRUCTURAL, 1, ALPHA)
                 .pin(mesh.group("hem")).build();
-        Simulation sim = cloth.simulation(new SolverSettings().solver(solver).iterations(iterations).substeps(20)
-                .timestep(1 / 60.0).gravity(0, -G, 0));
+        Simulation sim = cloth.simulation(new SolverSettings().withSolver(solver).withIterations(iterations).withSubsteps(20)
+                .withTimestep(1 / 60.0).withGravity(0, -G, 0));
         Particles p = cloth.particles();
         for (int s = 0; s < 1500; s++) sim.step();
         assertTrue(Metrics.kineticEnergy(p) < 1e-10, "at rest, KE " + Metrics.kineticEnergy(p));

@@ -20,7 +20,7 @@ class TunnellingTest {
     static int particlesLeftBehind(String name, java.util.function.Consumer<Simulation> addCollider, DoubleSupplier centreZ, Footprint footprint) {
         Cloth c = new ClothBuilder().resolution(32, 32).size(1, 1).origin(-0.5, 1.6, 0).arealDensity(0.2).pinTopCorners()
                 .family(ConstraintFamily.STRUCTURAL, 1, 1e-6).family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2).build();
-        Simulation sim = c.simulation(new SolverSettings().iterations(2).substeps(1).timestep(1 / 60.0));
+        Simulation sim = c.simulation(new SolverSettings().withIterations(2).withSubsteps(1).withTimestep(1 / 60.0));
         addCollider.accept(sim);
         Particles p = c.particles();
         int through = 0, carried = 0;
@@ -80,7 +80,7 @@ class TunnellingTest {
     static int[] thrownAtABoard(java.util.function.Consumer<Simulation> board, double top, double bottom) {
         Cloth c = new ClothBuilder().resolution(32, 32).size(1, 1).plane(ClothBuilder.Plane.HORIZONTAL).origin(0, 0.8, 0).arealDensity(0.2)
                 .family(ConstraintFamily.STRUCTURAL, 1, 1e-6).family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2).build();
-        Simulation sim = c.simulation(new SolverSettings().iterations(2).substeps(1).timestep(0.002));
+        Simulation sim = c.simulation(new SolverSettings().withIterations(2).withSubsteps(1).withTimestep(0.002));
         board.accept(sim);
         Particles p = c.particles();
         for (int i = 0; i < p.count(); i++) p.setVelocity(i, 0, -10, 0);

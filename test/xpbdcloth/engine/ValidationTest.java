@@ -17,14 +17,14 @@ class ValidationTest {
     @Test
     void solverSettings() {
         SolverSettings s = new SolverSettings();
-        rejects("iterations", "0", () -> s.iterations(0));
-        rejects("substeps", "-2", () -> s.substeps(-2));
-        rejects("dt", "0.0", () -> s.timestep(0));
-        rejects("dt", "-0.01", () -> s.timestep(-0.01));
-        rejects("dt", "NaN", () -> s.timestep(Double.NaN));
-        rejects("dt", "Infinity", () -> s.timestep(Double.POSITIVE_INFINITY));
-        rejects("gravity.y", "NaN", () -> s.gravity(0, Double.NaN, 0));
-        rejects("mode", "null", () -> s.mode(null));
+        rejects("iterations", "0", () -> s.withIterations(0));
+        rejects("substeps", "-2", () -> s.withSubsteps(-2));
+        rejects("dt", "0.0", () -> s.withTimestep(0));
+        rejects("dt", "-0.01", () -> s.withTimestep(-0.01));
+        rejects("dt", "NaN", () -> s.withTimestep(Double.NaN));
+        rejects("dt", "Infinity", () -> s.withTimestep(Double.POSITIVE_INFINITY));
+        rejects("gravity.y", "NaN", () -> s.withGravity(0, Double.NaN, 0));
+        rejects("mode", "null", () -> s.withMode(null));
         assertEquals(2, s.iterations(), "a rejected call changes nothing");
         assertEquals(0.02, s.timestep());
     }

@@ -11,8 +11,8 @@ import org.junit.jupiter.api.Test;
  */
 class VertexBlockDescentTest {
     static SolverSettings vbd(int substeps, int iterations) {
-        return new SolverSettings().mode(ConstraintMode.XPBD).solver(SolverType.VERTEX_BLOCK_DESCENT).substeps(substeps).iterations(iterations)
-                .timestep(0.02).gravity(0, -Rigs.G, 0);
+        return new SolverSettings().withMode(ConstraintMode.XPBD).withSolver(SolverType.VERTEX_BLOCK_DESCENT).withSubsteps(substeps).withIterations(iterations)
+                .withTimestep(0.02).withGravity(0, -Rigs.G, 0);
     }
 
     /**
@@ -70,7 +70,7 @@ class VertexBlockDescentTest {
     /** The middle of the top edge below the pinned corners, after {@code seconds} of damped hanging. */
     static double sag(int n, SolverSettings settings, double seconds) {
         Cloth cloth = hangingSheet(n);
-        Simulation sim = cloth.simulation(settings.damping(3));
+        Simulation sim = cloth.simulation(settings.withDamping(3));
         for (int s = 0; s < Math.round(seconds / 0.02); s++) sim.step();
         Particles p = sim.particles();
         sim.close();
@@ -88,8 +88,8 @@ class VertexBlockDescentTest {
         int n = 16;
         double one = sag(n, vbd(10, 1), 12), twelve = sag(n, vbd(10, 12), 12);
         assertEquals(twelve, one, 1e-6 * twelve, "vertex block descent, 1 vs 12 sweeps a substep");
-        SolverSettings gs = new SolverSettings().mode(ConstraintMode.XPBD).substeps(10).timestep(0.02).gravity(0, -Rigs.G, 0);
-        double gsOne = sag(n, gs.copy().iterations(1), 12), gsTwelve = sag(n, gs.copy().iterations(12), 12);
+        SolverSettings gs = new SolverSettings().withMode(ConstraintMode.XPBD).withSubsteps(10).withTimestep(0.02).withGravity(0, -Rigs.G, 0);
+        double gsOne = sag(n, gs.withIterations(1), 12), gsTwelve = sag(n, gs.withIterations(12), 12);
         assertTrue(gsOne > 1.3 * gsTwelve, "Gauss-Seidel's rest sags more with fewer sweeps: " + gsOne + " vs " + gsTwelve);
         assertTrue(gsTwelve > 1.5 * twelve, "and even at twelve it is far from the converged rest: " + gsTwelve + " vs " + twelve);
     }
@@ -103,8 +103,8 @@ class VertexBlockDescentTest {
     void theBalanceTellsAConvergedRestFromAnUnconvergedOne() {
         for (SolverType type : new SolverType[] {SolverType.VERTEX_BLOCK_DESCENT, SolverType.GAUSS_SEIDEL}) {
             Cloth cloth = hangingSheet(16);
-            Simulation sim = cloth.simulation(new SolverSettings().mode(ConstraintMode.XPBD).solver(type).substeps(10).iterations(1)
-                    .timestep(0.02).gravity(0, -Rigs.G, 0).damping(3));
+            Simulation sim = cloth.simulation(new SolverSettings().withMode(ConstraintMode.XPBD).withSolver(type).withSubsteps(10).withIterations(1)
+                    .withTimestep(0.02).withGravity(0, -Rigs.G, 0).withDamping(3));
             for (int s = 0; s < 600; s++) sim.step();
             double balance = sim.balance();
             if (type == SolverType.VERTEX_BLOCK_DESCENT) assertTrue(balance < 1e-3, "vertex block descent's rest off balance by " + balance);
@@ -118,7 +118,7 @@ class VertexBlockDescentTest {
         double[][] x = new double[2][];
         for (int threads = 1; threads <= 2; threads++) {
             Cloth cloth = hangingSheet(12);
-            Simulation sim = cloth.simulation(vbd(5, 2).threads(threads));
+            Simulation sim = cloth.simulation(vbd(5, 2).withThreads(threads));
             sim.add(new Sphere(SpherePath.linear(0, 1.6, 0.6, 0, 0, -0.5), 0.2, 0.01, 0.5, 0.3));
             for (int s = 0; s < 60; s++) sim.step();
             sim.close();
@@ -132,7 +132,7 @@ class VertexBlockDescentTest {
     void aClothComesToRestOnAFloor() {
         Cloth cloth = new ClothBuilder().resolution(12, 12).size(0.6, 0.6).plane(ClothBuilder.Plane.HORIZONTAL).origin(0, 0.2, 0).arealDensity(0.3)
                 .family(ConstraintFamily.STRUCTURAL, 1, 1e-5).build();
-        Simulation sim = cloth.simulation(vbd(5, 2).damping(0.5));
+        Simulation sim = cloth.simulation(vbd(5, 2).withDamping(0.5));
         double margin = 0.005;
         sim.add(new Plane(new double[] {0, 0, 0}, new double[] {0, 1, 0}, margin, 0.6, 0.4));
         for (int s = 0; s < 200; s++) sim.step();
@@ -148,8 +148,8 @@ class VertexBlockDescentTest {
 
     @Test
     void pbdIsRefusedByName() {
-        SolverSettings s = new SolverSettings().mode(ConstraintMode.PBD);
-        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> s.solver(SolverType.VERTEX_BLOCK_DESCENT));
+        SolverSettings s = new SolverSettings().withMode(ConstraintMode.PBD);
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> s.withSolver(SolverType.VERTEX_BLOCK_DESCENT));
         assertTrue(e.getMessage().contains("PBD") && e.getMessage().contains("vertex-block-descent"), e.getMessage());
     }
 }

@@ -27,7 +27,7 @@ class XpbdSpringTest {
     @MethodSource("iterationsAndTimesteps")
     void staticStretchIsComplianceTimesWeight(int iterations, double dt) {
         double m = 0.1, alpha = 1e-3, L = 1.0;
-        SolverSettings s = new SolverSettings().mode(ConstraintMode.XPBD).iterations(iterations).timestep(dt);
+        SolverSettings s = new SolverSettings().withMode(ConstraintMode.XPBD).withIterations(iterations).withTimestep(dt);
         Simulation sim = Rigs.spring(m, L, s, 1.0, alpha);
         Rigs.settle(sim, 1e-9, 200_000);
         double extension = -sim.particles().y(1) - L;
@@ -41,7 +41,7 @@ class XpbdSpringTest {
     /** α = 0 is the hard limit: a single link converges to its rest length (one projection is exact). */
     @Test
     void zeroComplianceIsInextensible() {
-        SolverSettings s = new SolverSettings().mode(ConstraintMode.XPBD).iterations(2).timestep(1 / 60.0);
+        SolverSettings s = new SolverSettings().withMode(ConstraintMode.XPBD).withIterations(2).withTimestep(1 / 60.0);
         Simulation sim = Rigs.spring(0.5, 0.3, s, 1.0, 0.0);
         for (int i = 0; i < 500; i++) sim.step();
         double stretch = (-sim.particles().y(1)) / 0.3 - 1;
@@ -53,7 +53,7 @@ class XpbdSpringTest {
     void chainLinksStretchByTheWeightBelow() {
         int links = 10;
         double m = 0.01, alpha = 1e-2, L = 0.1;
-        SolverSettings s = new SolverSettings().mode(ConstraintMode.XPBD).iterations(50).timestep(1 / 60.0);
+        SolverSettings s = new SolverSettings().withMode(ConstraintMode.XPBD).withIterations(50).withTimestep(1 / 60.0);
         Simulation sim = Rigs.chain(links, m, L, s, 1.0, alpha);
         Rigs.settle(sim, 1e-10, 100_000);
         Particles p = sim.particles();

@@ -35,8 +35,8 @@ class MembraneElasticityTest {
         for (int r = 0; r < rows; r++) builder.pin(r, 0);
         Cloth cloth = builder.build();
         Particles p = cloth.particles();
-        Simulation sim = new Simulation(p, new SolverSettings().mode(ConstraintMode.XPBD).iterations(60).substeps(1)
-                .timestep(0.005).gravity(0, 0, 0).damping(20));
+        Simulation sim = new Simulation(p, new SolverSettings().withMode(ConstraintMode.XPBD).withIterations(60).withSubsteps(1)
+                .withTimestep(0.005).withGravity(0, 0, 0).withDamping(20));
         for (ConstraintBlock b : FabricConstraints.build(p, cloth.triangles(), new double[] {Math.cos(warpAngle), Math.sin(warpAngle), 0},
                 FABRIC, 1e-5, false)) sim.add(b);
         // A uniform traction on the free end: the consistent nodal loads of linear elements (half at the corners).

@@ -27,7 +27,7 @@ class TetherTest {
         for (int c = 0; c < n; c++) b.pin(0, c);
         Cloth cloth = b.build();
         Particles p = cloth.particles();
-        Simulation sim = new Simulation(p, new SolverSettings().mode(ConstraintMode.XPBD).iterations(2).substeps(2).timestep(0.02).gravity(0, -9.81, 0));
+        Simulation sim = new Simulation(p, new SolverSettings().withMode(ConstraintMode.XPBD).withIterations(2).withSubsteps(2).withTimestep(0.02).withGravity(0, -9.81, 0));
         TetherBlock rest = null;
         for (ConstraintBlock block : FabricConstraints.build(p, cloth.triangles(), new double[] {1, 0, 0},
                 new OrthotropicMaterial(500, 500, 0.3, 50), 1e-5, true)) {

@@ -89,7 +89,7 @@ class CantileverTest {
             p.setPosition(i, p.x(i) - l, p.y(i), p.z(i));
             if (Math.abs(p.x(i)) <= 1e-9 * c) p.pin(i);
         }
-        Simulation sim = new Simulation(p, new SolverSettings().mode(ConstraintMode.XPBD).gravity(0, -GRAVITY, 0));
+        Simulation sim = new Simulation(p, new SolverSettings().withMode(ConstraintMode.XPBD).withGravity(0, -GRAVITY, 0));
         for (ConstraintBlock b : FabricConstraints.build(p, mesh.triangles, new double[] {1, 0, 0}, fabric.membrane, fabric.bendingStiffness, false))
             sim.add(b);
         ClothEnergy energy = new ClothEnergy(sim, List.of());

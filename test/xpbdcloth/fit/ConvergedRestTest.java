@@ -39,8 +39,8 @@ class ConvergedRestTest {
 
     static void assertRestsWhereNewtonDoes(int n, double tolerance) {
         Cloth cloth = new ClothBuilder().resolution(n, n).size(1, 1).origin(0, 2, 0).arealDensity(0.324).pinTopCorners().build();
-        Simulation sim = cloth.simulation(new SolverSettings().mode(ConstraintMode.XPBD).solver(SolverType.VERTEX_BLOCK_DESCENT)
-                .iterations(2).substeps(10).timestep(0.02).gravity(0, -9.81, 0).damping(2));
+        Simulation sim = cloth.simulation(new SolverSettings().withMode(ConstraintMode.XPBD).withSolver(SolverType.VERTEX_BLOCK_DESCENT)
+                .withIterations(2).withSubsteps(10).withTimestep(0.02).withGravity(0, -9.81, 0).withDamping(2));
         Fabric denim = FabricCatalogue.named("denim");
         for (ConstraintBlock b : FabricConstraints.build(cloth.particles(), cloth.triangles(), new double[] {1, 0, 0}, denim.membrane, denim.bendingStiffness, false))
             sim.add(b);

@@ -116,10 +116,10 @@ class DynamicFitTest {
         assertTrue(assertThrows(IllegalArgumentException.class, () -> new TrajectoryAdjoint(Scene.builtIn("tablecloth").simulation(), ALL, false))
                 .getMessage().contains("no colliders"));
         Simulation pbd = drape();
-        pbd.settings().mode(ConstraintMode.PBD);
+        pbd.settings(pbd.settings().withMode(ConstraintMode.PBD));
         assertTrue(assertThrows(IllegalArgumentException.class, () -> new TrajectoryAdjoint(pbd, ALL, false)).getMessage().contains("mode must be XPBD"));
         Simulation undamped = drape();
-        undamped.settings().damping(0);
+        undamped.settings(undamped.settings().withDamping(0));
         assertTrue(assertThrows(IllegalArgumentException.class, () -> new TrajectoryAdjoint(undamped, ALL, true))
                 .getMessage().contains("solver.damping must be > 0 to fit damping"));
         Simulation tethered = Scene.of(xpbdcloth.scene.PresetLoader.parse("tethered.json",

@@ -111,7 +111,7 @@ class StaticFitTest {
         double[] moved = new double[2], h = {1e-3, 1e-4};
         for (int k = 0; k < 2; k++) {
             Simulation sim = Scene.builtIn("drape").simulation();
-            sim.settings().solver(xpbdcloth.engine.SolverType.JACOBI_PCG).iterations(100).substeps(1).timestep(h[k]).pcgTolerance(1e-10).pcgMaxIterations(5000);
+            sim.settings(sim.settings().withSolver(xpbdcloth.engine.SolverType.JACOBI_PCG).withIterations(100).withSubsteps(1).withTimestep(h[k]).withPcgTolerance(1e-10).withPcgMaxIterations(5000));
             for (int i = 0; i < sim.particles().count(); i++)
                 sim.particles().setPosition(i, observed[3 * i], observed[3 * i + 1], observed[3 * i + 2]);
             sim.step();
@@ -137,7 +137,7 @@ class StaticFitTest {
                 () -> new StaticFit(Scene.builtIn("curtain").simulation(), List.of(ConstraintFamily.BEND), new double[3 * 32 * 32], 1));
         assertTrue(absent.getMessage().contains("params names bend") && absent.getMessage().contains("structural"), absent.getMessage());
         Simulation pbd = Scene.builtIn("drape").simulation();
-        pbd.settings().mode(ConstraintMode.PBD);
+        pbd.settings(pbd.settings().withMode(ConstraintMode.PBD));
         assertTrue(assertThrows(IllegalArgumentException.class, () -> new StaticFit(pbd, ALL, observed, 1)).getMessage().startsWith("mode must be XPBD"));
         Simulation hard = Scene.builtIn("drape").simulation();
         hard.setCompliance(ConstraintFamily.SHEAR, 0);

@@ -13,8 +13,8 @@ class DeterminismTest {
     static double[] run(String scene, boolean switchModes) {
         Simulation sim = Scene.builtIn(scene).simulation();
         for (int s = 0; s < 1000; s++) {
-            if (switchModes && s == 300) sim.settings().mode(ConstraintMode.PBD);
-            if (switchModes && s == 600) sim.settings().mode(ConstraintMode.XPBD);
+            if (switchModes && s == 300) sim.settings(sim.settings().withMode(ConstraintMode.PBD));
+            if (switchModes && s == 600) sim.settings(sim.settings().withMode(ConstraintMode.XPBD));
             sim.step();
         }
         return sim.particles().positions().clone();

@@ -28,7 +28,7 @@ class GlobalSolverScenesTest {
     /** {peak strain, largest kinetic energy in the first 2000 steps, largest in the last 1000}, or a message. */
     static Object run(String scene, SolverType type) {
         Simulation sim = Scene.builtIn(scene).simulation();
-        sim.settings().solver(type);
+        sim.settings(sim.settings().withSolver(type));
         double peak = 0, early = 0, late = 0;
         for (int k = 0; k < STEPS; k++) {
             sim.step();

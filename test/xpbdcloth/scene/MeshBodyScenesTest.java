@@ -29,7 +29,7 @@ class MeshBodyScenesTest {
     void noParticleIsEverInsideTheBody(String name) {
         Scene scene = Scene.builtIn(name);
         Simulation sim = scene.simulation();
-        sim.settings().threads(2);
+        sim.settings(sim.settings().withThreads(2));
         MeshCollider body = body(sim);
         Particles p = scene.cloth().particles();
         double thickness = 2 * body.margin(), worst = Double.MAX_VALUE;
@@ -48,7 +48,7 @@ class MeshBodyScenesTest {
     @Test
     void twoThreadsGiveTheBitsOfOne() {
         Scene one = Scene.builtIn("mannequin-poncho"), two = Scene.builtIn("mannequin-poncho");
-        two.simulation().settings().threads(2);
+        two.simulation().settings(two.simulation().settings().withThreads(2));
         for (int step = 0; step < 60; step++) { one.simulation().step(); two.simulation().step(); }
         assertArrayEquals(one.cloth().particles().positions(), two.cloth().particles().positions(), 0.0);
     }

@@ -21,7 +21,7 @@ class MeshScenesUnderMultigridTest {
     void everySolveOfTheMeshScenesConvergesBeforeTheCap() {
         for (String scene : new String[] {"flag", "tablecloth"}) {
             Simulation sim = Scene.builtIn(scene).simulation();
-            sim.settings().solver(SolverType.MULTIGRID_PCG);
+            sim.settings(sim.settings().withSolver(SolverType.MULTIGRID_PCG));
             int cap = sim.settings().pcgMaxIterations(), worst = 0, capped = 0;
             double peak = 0;
             for (int k = 0; k < STEPS; k++) {

@@ -18,7 +18,7 @@ class ObjExportTest {
         Preset preset = PresetLoader.builtIn("hanging");
         assertEquals(4, ObjExport.recordSequence(preset, 4, dir));
         Scene replay = Scene.of(preset);
-        int steps = ObjExport.stepsPerFrame(preset.solver.dt);
+        int steps = ObjExport.stepsPerFrame(preset.solver.timestep());
         assertEquals(1, steps, "dt = 20 ms: one step per 60 Hz frame");
         ClothMesh first = null;
         for (int f = 1; f <= 4; f++) {
@@ -38,9 +38,9 @@ class ObjExportTest {
     @Test
     void headerTimesMatchTheStatedRate(@TempDir Path dir) throws IOException {
         Preset preset = PresetLoader.builtIn("flag"); // dt = 20 ms: one step is 1/50 s, not a 60 Hz frame
-        assertEquals(50.0, ObjExport.naturalFps(preset.solver.dt), 1e-9);
+        assertEquals(50.0, ObjExport.naturalFps(preset.solver.timestep()), 1e-9);
         for (double fps : new double[] {50, 25, 10}) {
-            int steps = ObjExport.stepsPerFrame(preset.solver.dt, fps);
+            int steps = ObjExport.stepsPerFrame(preset.solver.timestep(), fps);
             Path folder = dir.resolve("fps" + (int) fps);
             ObjExport.recordSequence(preset, 3, folder, steps);
             for (int f = 1; f <= 3; f++) {

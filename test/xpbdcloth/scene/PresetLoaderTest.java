@@ -23,8 +23,8 @@ class PresetLoaderTest {
     void validTextLoads() {
         Preset p = PresetLoader.parse("t.json", valid());
         assertEquals(4, p.cloth.columns);
-        assertEquals(1, p.solver.substeps, "default substeps");
-        assertEquals(-9.81, p.solver.gravity[1], "default gravity");
+        assertEquals(1, p.solver.substeps(), "default substeps");
+        assertEquals(-9.81, p.solver.gravityY(), "default gravity");
     }
 
     /**
@@ -60,7 +60,7 @@ class PresetLoaderTest {
         assertEquals("solver", e.field());
         assertTrue(e.problem().startsWith("particles × substeps × (iterations + colliders) must be at most 33554432"), e.getMessage());
         assertTrue(e.problem().contains("262144 × 100 × (1000 + 0) = 26214400000"), e.getMessage());
-        assertEquals(128, PresetLoader.parse("big.json", big.replace("\"iterations\": 2", "\"iterations\": 128")).solver.iterations);
+        assertEquals(128, PresetLoader.parse("big.json", big.replace("\"iterations\": 2", "\"iterations\": 128")).solver.iterations());
 
         String global = valid().replace("\"iterations\": 2", "\"iterations\": 2, \"substeps\": 10, \"type\": \"jacobi-pcg\"");
         e = assertThrows(PresetException.class, () -> PresetLoader.parse("g.json", global.replace("\"columns\": 4, \"rows\": 4", "\"columns\": 128, \"rows\": 128")));

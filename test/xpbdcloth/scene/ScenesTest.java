@@ -33,7 +33,7 @@ class ScenesTest {
     void curtainStretchesUnderGaussSeidelAndHoldsUnderAGlobalSolve() {
         for (SolverType type : SolverType.values()) {
             Simulation sim = Scene.builtIn("curtain").simulation();
-            sim.settings().solver(type);
+            sim.settings(sim.settings().withSolver(type));
             double least = Double.POSITIVE_INFINITY, most = 0;
             for (int s = 0; s < 300; s++) {
                 sim.step();
@@ -55,7 +55,7 @@ class ScenesTest {
         for (ConstraintMode mode : ConstraintMode.values()) {
             Scene scene = Scene.builtIn("sphere-pass");
             Simulation sim = scene.simulation();
-            sim.settings().mode(mode);
+            sim.settings(sim.settings().withMode(mode));
             Sphere sphere = sim.spheres().get(0);
             Particles p = sim.particles();
             double worst = 0;
@@ -84,7 +84,7 @@ class ScenesTest {
         for (ConstraintMode mode : ConstraintMode.values()) {
             Scene scene = Scene.builtIn("corners");
             Simulation sim = scene.simulation();
-            sim.settings().mode(mode);
+            sim.settings(sim.settings().withMode(mode));
             assertEquals(4.0, scene.scriptEnd(), 1e-12);
             double maxStrain = 0;
             double[] windowPeak = new double[4];

@@ -121,10 +121,10 @@ class TrajectoryHashTest {
     static String variantHash(String scene, String variant) {
         Simulation sim = Scene.builtIn(scene).simulation();
         switch (variant) {
-            case "xpbd": sim.settings().mode(ConstraintMode.XPBD); break;
-            case "pbd": sim.settings().solver(SolverType.GAUSS_SEIDEL).mode(ConstraintMode.PBD); break; // PBD is Gauss-Seidel's
-            case "coloured": sim.settings().order(ConstraintOrder.COLOURED); break;
-            case "coloured-2-threads": sim.settings().threads(2); break;
+            case "xpbd": sim.settings(sim.settings().withMode(ConstraintMode.XPBD)); break;
+            case "pbd": sim.settings(sim.settings().withSolver(SolverType.GAUSS_SEIDEL).withMode(ConstraintMode.PBD)); break; // PBD is Gauss-Seidel's
+            case "coloured": sim.settings(sim.settings().withOrder(ConstraintOrder.COLOURED)); break;
+            case "coloured-2-threads": sim.settings(sim.settings().withThreads(2)); break;
             default: throw new IllegalArgumentException("variant " + variant);
         }
         for (int s = 0; s < STEPS; s++) sim.step();

@@ -75,7 +75,7 @@ class FitCommandTest {
         Preset truth = PresetLoader.builtIn("drape");
         for (ConstraintFamily f : new ConstraintFamily[] {ConstraintFamily.STRUCTURAL, ConstraintFamily.SHEAR, ConstraintFamily.BEND})
             assertEquals(truth.families.get(f).compliance, fitted.families.get(f).compliance, 0.02 * truth.families.get(f).compliance, f + " α");
-        assertEquals(truth.solver.damping, fitted.solver.damping, 0.02 * truth.solver.damping, "damping");
+        assertEquals(truth.solver.damping(), fitted.solver.damping(), 0.02 * truth.solver.damping(), "damping");
         assertTrue(Files.readString(dir.resolve("iterations.csv")).lines().findFirst().orElse("").endsWith(",damping_per_s,simulations"));
         err.getBuffer().setLength(0);
         assertEquals(2, run("fit", "--scene", "drape", "--observed", dir.resolve("drape-fitted.json").toString(), "--params", "damping"));

@@ -14,7 +14,7 @@ class PlausibilityTest {
     @Test
     void freeFallIsWithinTheBoundAndAKickFromNowhereIsNot() {
         Simulation sim = new ClothBuilder().resolution(8, 8).size(1, 1).plane(ClothBuilder.Plane.HORIZONTAL).origin(0, 2, 0)
-                .arealDensity(0.2).family(ConstraintFamily.STRUCTURAL, 1, 1e-6).build().simulation(new SolverSettings().iterations(5).substeps(4));
+                .arealDensity(0.2).family(ConstraintFamily.STRUCTURAL, 1, 1e-6).build().simulation(new SolverSettings().withIterations(5).withSubsteps(4));
         Plausibility bound = new Plausibility(sim.particles(), sim.settings());
         for (int s = 0; s < 30; s++) {
             sim.step();
