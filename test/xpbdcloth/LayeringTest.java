@@ -15,7 +15,8 @@ import org.junit.jupiter.api.Test;
 /**
  * The layering is one-way: tools, library → sketch → fit/experiments → usd → scene → fabric → engine → mesh, linalg. The engine (and its tests)
  * imports nothing of the layers above it nor of Processing; the fabric package nothing above it; the scene package nothing of the sketch,
- * the tools or the experiments. Read from the source text, so a wrong import fails here by name.
+ * the tools or the experiments. Read from the source text, so a wrong import fails here by name. The tools and experiments are a
+ * source set of their own (tools/), which the simulator's (src/) cannot see at all: the compiler holds that line.
  */
 class LayeringTest {
     static final Pattern IMPORT = Pattern.compile("^import\\s+(static\\s+)?([\\w.]+)", Pattern.MULTILINE);
@@ -87,8 +88,9 @@ class LayeringTest {
     /** The Processing library is a face on the sketch's parts: nothing below it knows it exists. */
     @Test
     void nothingImportsTheLibrary() throws IOException {
-        for (String below : new String[] {"sketch", "fit", "scene", "engine", "mesh", "linalg", "experiments"})
-            assertEquals(List.of(), violations(Path.of("src/xpbdcloth/" + below), "xpbdcloth.library", "xpbdcloth.tools"));
+        for (String below : new String[] {"sketch", "fit", "scene", "engine", "mesh", "linalg"})
+            assertEquals(List.of(), violations(Path.of("src/xpbdcloth/" + below), "xpbdcloth.library"));
+        assertEquals(List.of(), violations(Path.of("tools/xpbdcloth/experiments"), "xpbdcloth.library", "xpbdcloth.tools"));
     }
 
     /** The repository cites papers and public sources, never a folder outside itself. */

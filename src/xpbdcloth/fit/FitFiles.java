@@ -8,19 +8,17 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import org.knowm.xchart.BitmapEncoder;
-import org.knowm.xchart.XYChart;
-import org.knowm.xchart.XYChartBuilder;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.OrthotropicMaterial;
 import xpbdcloth.fabric.Fabric;
 import xpbdcloth.scene.Preset;
 
-/** What a fit leaves behind: the iterations as CSV and PNG, and the fitted compliances as a preset. */
+/** What a fit leaves behind: the iterations as CSV and the fitted compliances as a preset (the command line adds a chart, {@code FitChart}). */
 public final class FitFiles {
     private FitFiles() {}
 
-    static String name(ConstraintFamily f) { return ClothEnergy.name(f); }
+    /** A family as the fit's files name it: "structural", "shear", "bend". */
+    public static String name(ConstraintFamily f) { return ClothEnergy.name(f); }
 
     /** iteration, loss (m²), rms (m), |∇L|, α per family (m/N), the damping (1/s) if fitted, forward solves. */
     public static void writeCsv(Path file, MaterialFit fit) throws IOException {
@@ -35,33 +33,6 @@ public final class FitFiles {
             s.append(',').append(it.solves).append('\n');
         }
         Files.writeString(file, s);
-    }
-
-    /** Loss, each α (and the damping) against the iterations, on log axes. */
-    public static void writePng(Path file, MaterialFit fit) throws IOException {
-        String kind = Character.toUpperCase(fit.kind().charAt(0)) + fit.kind().substring(1);
-        XYChart chart = new XYChartBuilder().width(1000).height(560).title(kind + " fit: loss and parameters per iteration")
-                .xAxisTitle("iteration").yAxisTitle(fit.fitsDamping() ? "loss (m²) / α (m/N) / c (1/s)" : "loss (m²) / α (m/N)").build();
-        chart.getStyler().setYAxisLogarithmic(true);
-        chart.getStyler().setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.OutsideS);
-        chart.getStyler().setLegendLayout(org.knowm.xchart.style.Styler.LegendLayout.Horizontal);
-        List<Double> x = new ArrayList<>(), loss = new ArrayList<>();
-        for (FitIteration it : fit.history()) {
-            x.add((double) it.index);
-            loss.add(Math.max(it.loss, 1e-40)); // a log axis has no 0
-        }
-        chart.addSeries("loss ½Σ|x − x̂|² (m²)", x, loss);
-        for (int f = 0; f < fit.families().size(); f++) {
-            List<Double> a = new ArrayList<>();
-            for (FitIteration it : fit.history()) a.add(it.compliance[f]);
-            chart.addSeries("α " + name(fit.families().get(f)) + " (m/N)", x, a);
-        }
-        if (fit.fitsDamping()) {
-            List<Double> c = new ArrayList<>();
-            for (FitIteration it : fit.history()) c.add(it.damping);
-            chart.addSeries("damping c (1/s)", x, c);
-        }
-        BitmapEncoder.saveBitmap(chart, file.toString(), BitmapEncoder.BitmapFormat.PNG);
     }
 
     /**

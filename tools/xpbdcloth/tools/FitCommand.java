@@ -125,7 +125,7 @@ final class FitCommand implements Callable<Integer> {
         Path json = folder.resolve(preset.name + "-fitted.json");
         FitFiles.writePreset(json, preset, PresetLoader.text(scene), preset.name + "-fitted", fit, observed.getName());
         FitFiles.writeCsv(folder.resolve("iterations.csv"), fit);
-        FitFiles.writePng(folder.resolve("fit.png"), fit);
+        FitChart.writePng(folder.resolve("fit.png"), fit);
         FitIteration last = fit.last();
         out.printf(Locale.ROOT, "%s after %d iterations in %.1f s: RMS %.4f mm%n", converged ? "converged" : "NOT converged", last.index, seconds, last.rms * 1e3);
         if (noiseMm > 0)
