@@ -18,18 +18,28 @@ import java.util.Arrays;
  * over the step's substeps, as a hand moves continuously. A target that jumped at the step's start was
  * reached in the first substep and then held still, so a particle let go after a fast drag left at rest
  * instead of with the hand's velocity: the cloth could not be thrown.
+ *
+ * <p>A moving target does work on the cloth: the force F its projections exerted on the particle in a
+ * substep (each correction δx is an impulse m δx/h, so F = Σ m δx/h²) times the particle's move in that
+ * substep, W += F·Δx, which bounds what the force gave: implicit Euler's m(v' − v)/h = F makes the kinetic
+ * energy change F·Δx − h²|F|²/2m. {@link #work} sums it, so an energy balance can count what a hand put in.
  */
 public final class AttachmentBlock extends ConstraintBlock {
     /** t per constraint, xyz interleaved, m: where the target is in this substep. */
     double[] target;
     /** Where the target was when the step began, and where it is asked to be when the step ends. */
     private double[] start, goal;
+    /** The force on each attachment's particle in this substep (N), xyz interleaved. */
+    private double[] force;
+    /** The work the moving targets have done on the cloth so far, J. */
+    private double work;
 
     public AttachmentBlock(int capacity) {
         super(ConstraintFamily.ATTACHMENT, 1, capacity);
         target = new double[3 * lambda.length];
         start = new double[3 * lambda.length];
         goal = new double[3 * lambda.length];
+        force = new double[3 * lambda.length];
     }
 
     /** Adds an attachment of particle i to (x, y, z); returns its index. */
@@ -66,6 +76,25 @@ public final class AttachmentBlock extends ConstraintBlock {
         System.arraycopy(goal, 0, start, 0, 3 * count);
     }
 
+    /** After a substep's solve: adds F·Δx (Δx = x − x_prev, the particle's move in the substep) to the work, and starts the next substep's force at 0. */
+    void countWork(Particles p) {
+        double w = 0;
+        for (int i = 0; i < count; i++) {
+            int k = 3 * particles[i];
+            for (int a = 0; a < 3; a++) {
+                w += force[3 * i + a] * (p.x[k + a] - p.prev[k + a]);
+                force[3 * i + a] = 0;
+            }
+        }
+        work += w;
+    }
+
+    /**
+     * The work the attachments have done on the cloth since this block was made, J: positive
+     * where a hand pulled the cloth along, negative where it held the cloth back (a hard one held still does none).
+     */
+    public double work() { return work; }
+
     @Override public double evaluate(int i, Particles p) {
         int k = 3 * particles[i];
         double dx = p.x[k] - target[3 * i], dy = p.x[k + 1] - target[3 * i + 1], dz = p.x[k + 2] - target[3 * i + 2];
@@ -89,6 +118,10 @@ public final class AttachmentBlock extends ConstraintBlock {
         double w = p.w[particle];
         double s = w * deltaLambda(i, len, w, ctx) / len;
         x[k] += s * dx; x[k + 1] += s * dy; x[k + 2] += s * dz;
+        if (w > 0) { // F += m δx / h²
+            double f = s * ctx.inverseH2 / w;
+            force[3 * i] += f * dx; force[3 * i + 1] += f * dy; force[3 * i + 2] += f * dz;
+        }
     }
 
     @Override void projectRange(int from, int to, Particles p, SolverContext ctx) {
@@ -108,6 +141,7 @@ public final class AttachmentBlock extends ConstraintBlock {
         System.arraycopy(a.target, 3 * j, target, 3 * i, 3);
         System.arraycopy(a.start, 3 * j, start, 3 * i, 3);
         System.arraycopy(a.goal, 3 * j, goal, 3 * i, 3);
+        System.arraycopy(a.force, 3 * j, force, 3 * i, 3);
     }
 
     @Override void grow(int capacity) {
@@ -115,10 +149,11 @@ public final class AttachmentBlock extends ConstraintBlock {
         target = Arrays.copyOf(target, 3 * capacity);
         start = Arrays.copyOf(start, 3 * capacity);
         goal = Arrays.copyOf(goal, 3 * capacity);
+        force = Arrays.copyOf(force, 3 * capacity);
     }
 
     @Override void remove(int i) {
-        for (double[] a : new double[][] {target, start, goal}) System.arraycopy(a, 3 * (i + 1), a, 3 * i, 3 * (count - i - 1));
+        for (double[] a : new double[][] {target, start, goal, force}) System.arraycopy(a, 3 * (i + 1), a, 3 * i, 3 * (count - i - 1));
         super.remove(i);
     }
 }

@@ -168,6 +168,15 @@ public final class Simulation {
     /** Lets go of an attachment made by {@link #attach}; the object keeps its particle and target. */
     public void release(AttachmentConstraint a) { constraints.release(a); }
 
+    /**
+     * The work the attachments (grabs, handles) have done on the cloth since the simulation began, J
+     * ({@link AttachmentBlock#work}: each substep, the force on the particle times its move): what an energy
+     * balance counts as put in by hand. Counted where an attachment is projected, which is every hard one under
+     * every solver and a compliant one except under vertex block descent (which takes a compliant attachment
+     * into its particle's energy instead).
+     */
+    public double workByAttachments() { return constraints.attachments().work(); }
+
     /** Sets PBD stiffness k for every constraint of a family. */
     public void setStiffness(ConstraintFamily family, double k) { constraints.setStiffness(family, k); }
 
@@ -244,6 +253,7 @@ public final class Simulation {
             long s0 = System.nanoTime();
             solveStage.solve(s, iterations, probe);
             solveNanos += System.nanoTime() - s0;
+            attachments.countWork(particles);
             observer.after(Stage.SOLVE);
             Integrator.updateVelocities(particles, h);
             observer.after(Stage.UPDATE_VELOCITIES);

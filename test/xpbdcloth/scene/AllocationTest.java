@@ -21,9 +21,14 @@ class AllocationTest {
             Scene s = Scene.builtIn(name);
             s.setWind(true);
             for (int i = 0; i < 300; i++) s.simulation().step();
-            long before = threads.getCurrentThreadAllocatedBytes();
-            for (int i = 0; i < 200; i++) s.simulation().step();
-            double perStep = (threads.getCurrentThreadAllocatedBytes() - before) / 200.0;
+            // The smaller of two windows: a one-time event on this thread (the JIT recompiling the step can make it
+            // load a class it had not needed yet, tens of kB once) is not an allocation per step; one per step shows in both.
+            double perStep = Double.MAX_VALUE;
+            for (int window = 0; window < 2; window++) {
+                long before = threads.getCurrentThreadAllocatedBytes();
+                for (int i = 0; i < 100; i++) s.simulation().step();
+                perStep = Math.min(perStep, (threads.getCurrentThreadAllocatedBytes() - before) / 100.0);
+            }
             report.append(String.format(java.util.Locale.ROOT, "%s %.1f B/step; ", name, perStep));
             assertTrue(perStep < 16, name + " allocates " + perStep + " bytes per step");
         }

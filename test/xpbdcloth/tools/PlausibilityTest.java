@@ -15,7 +15,7 @@ class PlausibilityTest {
     void freeFallIsWithinTheBoundAndAKickFromNowhereIsNot() {
         Simulation sim = new ClothBuilder().resolution(8, 8).size(1, 1).plane(ClothBuilder.Plane.HORIZONTAL).origin(0, 2, 0)
                 .arealDensity(0.2).family(ConstraintFamily.STRUCTURAL, 1, 1e-6).build().simulation(new SolverSettings().withIterations(5).withSubsteps(4));
-        Plausibility bound = new Plausibility(sim.particles(), sim.settings());
+        Plausibility bound = new Plausibility(sim);
         for (int s = 0; s < 30; s++) {
             sim.step();
             assertNull(bound.check(0), "step " + s + ": free fall converts potential energy into kinetic, no more");

@@ -3,39 +3,44 @@ package xpbdcloth.tools;
 import java.util.Locale;
 import xpbdcloth.engine.Metrics;
 import xpbdcloth.engine.Particles;
-import xpbdcloth.engine.SolverSettings;
+import xpbdcloth.engine.Simulation;
 
 /**
  * A bound a physical run respects, where "finite" is too weak (a case may fling its cloth 1e5 m away at
  * 1e7 m/s and stay finite): the cloth's kinetic energy is at most the work that gravity and its drivers can
- * have done on it. Gravity's is the potential energy it has given up. A driver (a collider's surface, a grab,
- * the wind or the air, a push out of a solid) moving at most V can bring a particle to at most 2V, as a wall at
- * V does to a ball it bounces off, so all of them together give the cloth at most ½ M (2V)², M its free mass.
- * Springs store only what was put in, and damping, drag and friction take energy out. The cloth starts at
- * rest in its rest shape, so
- * <pre>  KE(t) ≤ U_g(0) − U_g(t) + ½ M (2 V)² + 1 % of the sum and 1 mJ  </pre>
+ * have done on it. Gravity's is the potential energy it has given up. A hand (a grab's moving target) keeps
+ * doing work as long as it moves, and a hand shaken back and forth can pump a cloth up without bound: its work
+ * W_hand is counted by the engine, force times its particle's move in each substep
+ * ({@link Simulation#workByAttachments}). Another driver (a collider's surface, the wind or the air, a push out
+ * of a solid) moving at most V can bring a particle to at most 2V, as a wall at V does to a ball it bounces off,
+ * so all of them together give the cloth at most ½ M (2V)², M its free mass. Springs store only what was put
+ * in, and damping, drag and friction take energy out. The cloth starts at rest in its rest shape, so
+ * <pre>  KE(t) ≤ U_g(0) − U_g(t) + max(0, W_hand) + ½ M (2 V)² + 1 % of the terms' sizes and 1 mJ  </pre>
  * is what a solver that neither creates nor amplifies energy keeps to, whatever its sweeps and steps.
  */
 final class Plausibility {
-    private final Particles particles;
-    private final SolverSettings settings;
-    private final double startPotential;
+    private final Simulation sim;
+    private final double startPotential, startHandWork;
 
-    Plausibility(Particles particles, SolverSettings settings) {
-        this.particles = particles;
-        this.settings = settings;
-        this.startPotential = Metrics.gravitationalEnergy(particles, settings);
+    Plausibility(Simulation sim) {
+        this.sim = sim;
+        this.startPotential = Metrics.gravitationalEnergy(sim.particles(), sim.settings());
+        this.startHandWork = sim.workByAttachments();
     }
 
-    /** Null if the state is within the bound for drivers no faster than {@code drive} m/s, else what exceeds it. */
+    /** Null if the state is within the bound for drivers other than hands no faster than {@code drive} m/s, else what exceeds it. */
     String check(double drive) {
+        Particles particles = sim.particles();
         double mass = 0;
         for (int i = 0; i < particles.count(); i++) if (particles.inverseMass(i) != 0) mass += 1 / particles.inverseMass(i);
         double kinetic = Metrics.kineticEnergy(particles);
-        double given = startPotential - Metrics.gravitationalEnergy(particles, settings) + 0.5 * mass * 4 * drive * drive;
-        double bound = Math.max(0, given) * 1.01 + 1e-3;
+        double gravity = startPotential - Metrics.gravitationalEnergy(particles, sim.settings());
+        // A hand's negative work (it held the cloth back) is not subtracted: the other drivers' credit is a bound on
+        // what they can give the cloth, not their work, and a collider flinging a held particle does work into the hand.
+        double hand = Math.max(0, sim.workByAttachments() - startHandWork), drivers = 0.5 * mass * 4 * drive * drive;
+        double bound = Math.max(0, gravity + hand + drivers) + 0.01 * (Math.abs(gravity) + Math.abs(hand) + drivers) + 1e-3;
         if (kinetic <= bound || !Double.isFinite(kinetic)) return null; // a non-finite state is reported as such
-        return String.format(Locale.ROOT, "implausible: kinetic energy %.3g J above what gravity and drivers of %.3g m/s can give, %.3g J",
-                kinetic, drive, bound);
+        return String.format(Locale.ROOT, "implausible: kinetic energy %.3g J above what gravity (%.3g J), hands (%.3g J) and drivers of %.3g m/s"
+                + " can give, %.3g J", kinetic, gravity, hand, drive, bound);
     }
 }
