@@ -6,7 +6,6 @@ import java.util.List;
 import java.util.Map;
 import xpbdcloth.engine.ClothBuilder;
 import xpbdcloth.engine.ConstraintFamily;
-import xpbdcloth.engine.ConstraintMode;
 import xpbdcloth.engine.Material;
 import xpbdcloth.engine.SolverSettings;
 import xpbdcloth.mesh.ClothMesh;
