@@ -38,6 +38,7 @@ public final class SelfCollision extends Collider implements Team.Job {
     static final double NEIGHBOURHOOD = 2;
     final double thickness;
     private final double[] rest;
+    private final CrossingGuard guard;
     // The hash: particles sorted by cell; cellStart[h] .. cellStart[h + 1] - 1 index into sorted.
     private int[] cellStart = new int[0], sorted = new int[0], cellOf = new int[0];
     // The positions in the hash's order (candidates in a bucket are read one after another) and each
@@ -75,12 +76,26 @@ public final class SelfCollision extends Collider implements Team.Job {
      * @param thickness     t, m, &gt; 0
      */
     public SelfCollision(double[] restPositions, double thickness, double staticFriction, double kineticFriction) {
+        this(restPositions, null, thickness, staticFriction, kineticFriction);
+    }
+
+    /**
+     * Particle pairs as above and, when {@code triangles} is given, a {@link CrossingGuard} on them: the
+     * substep's motion is cut back wherever a vertex would pass through a face or an edge through an edge.
+     *
+     * @param triangles the cloth's triangles (3 particle indices each), or null for particle pairs alone
+     */
+    public SelfCollision(double[] restPositions, int[] triangles, double thickness, double staticFriction, double kineticFriction) {
         super(0, staticFriction, kineticFriction);
         if (restPositions == null || restPositions.length % 3 != 0)
             throw new IllegalArgumentException("restPositions must hold x, y, z per particle, had " + (restPositions == null ? "null" : restPositions.length + " numbers"));
         this.rest = restPositions.clone();
         this.thickness = Check.inRange("thickness", thickness, Double.MIN_NORMAL, EngineRange.MAX_RADIUS);
+        this.guard = triangles == null ? null : new CrossingGuard(triangles, restPositions);
     }
+
+    /** The continuous triangle guard, or null when only particle pairs keep the cloth from itself. */
+    public CrossingGuard guard() { return guard; }
 
     public double thickness() { return thickness; }
 

@@ -11,7 +11,8 @@ import java.util.List;
  * al. 2019, "Small Steps"), the stages of {@link Stage} in order, each one call in {@link #run}: predict,
  * kinematics (scripts and colliders move to the substep's end, attachment targets glide their share),
  * collide, solve (λ = 0 once per substep, then n sweeps or global iterations, each ending with the
- * contacts, so hard contacts have the last word), update velocities, velocity pass (damping).
+ * contacts, so hard contacts have the last word; then the self-collision's {@link CrossingGuard}, if any,
+ * cuts back motion that would pass the cloth through itself), update velocities, velocity pass (damping).
  *
  * <p>Last line of defence: the state is copied before every step (into arrays made once) and checked
  * after it; a step that leaves a non-finite number, or throws, is undone and reported, never kept.
@@ -235,6 +236,7 @@ public final class Simulation {
         for (int s = 0; s < substeps; s++) {
             final double t = time + h;
             Integrator.predict(particles, settings, h);
+            if (self != null && self.guard() != null) self.guard().begin(particles);
             particles.clearDepenetration();
             System.arraycopy(particles.x, 0, prediction, 0, prediction.length);
             observer.after(Stage.PREDICT);
@@ -252,7 +254,12 @@ public final class Simulation {
             sweepListener.afterSweep(s, -1);
             long s0 = System.nanoTime();
             solveStage.solve(s, iterations, probe);
-            solveNanos += System.nanoTime() - s0;
+            long g0 = System.nanoTime();
+            solveNanos += g0 - s0;
+            if (self != null && self.guard() != null) {
+                self.guard().hold(particles, team);
+                collideNanos += System.nanoTime() - g0;
+            }
             attachments.countWork(particles);
             observer.after(Stage.SOLVE);
             Integrator.updateVelocities(particles, h);

@@ -65,6 +65,24 @@ final class TriangleGeometry {
      */
     static double firstCoplanarTime(double p0x, double p0y, double p0z, double p1x, double p1y, double p1z,
                                     double[] v0, double[] v1, int a, int b, int c, double slack, double[] scratch) {
+        coplanarCubic(v0, v1, a, b, c, p0x, p0y, p0z, p1x, p1y, p1z, scratch);
+        int roots = coplanarRoots(scratch);
+        double t0 = scratch[4], t1 = scratch[5], t2 = scratch[6]; // insideAt writes over the scratch
+        for (int r = 0; r < roots; r++) {
+            double t = r == 0 ? t0 : r == 1 ? t1 : t2;
+            if (insideAt(t, p0x, p0y, p0z, p1x, p1y, p1z, v0, v1, a, b, c, slack, scratch)) return t;
+        }
+        return -1;
+    }
+
+    /**
+     * The coefficients k₀..k₃ (into k[0..3]) of the cubic det(e₁, e₂, q)(τ) whose roots are the times the
+     * point p (moving p0 → p1) and the vertices a, b, c (moving v0 → v1) are coplanar: e₁ = b − a, e₂ = c − a,
+     * q = p − a, each linear in τ. With a, b the ends of one edge, c and p of another, the same cubic gives
+     * the times two edges are coplanar.
+     */
+    static void coplanarCubic(double[] v0, double[] v1, int a, int b, int c,
+                              double p0x, double p0y, double p0z, double p1x, double p1y, double p1z, double[] k) {
         // e1 = A + τB, e2 = C + τD, q = E + τF.
         double Ax = v0[3 * b] - v0[3 * a], Ay = v0[3 * b + 1] - v0[3 * a + 1], Az = v0[3 * b + 2] - v0[3 * a + 2];
         double Bx = (v1[3 * b] - v1[3 * a]) - Ax, By = (v1[3 * b + 1] - v1[3 * a + 1]) - Ay, Bz = (v1[3 * b + 2] - v1[3 * a + 2]) - Az;
@@ -78,10 +96,19 @@ final class TriangleGeometry {
         double bcx = By * Cz - Bz * Cy, bcy = Bz * Cx - Bx * Cz, bcz = Bx * Cy - By * Cx;
         double bdx = By * Dz - Bz * Dy, bdy = Bz * Dx - Bx * Dz, bdz = Bx * Dy - By * Dx;
         double mx = adx + bcx, my = ady + bcy, mz = adz + bcz;
-        double k0 = acx * Ex + acy * Ey + acz * Ez;
-        double k1 = acx * Fx + acy * Fy + acz * Fz + mx * Ex + my * Ey + mz * Ez;
-        double k2 = mx * Fx + my * Fy + mz * Fz + bdx * Ex + bdy * Ey + bdz * Ez;
-        double k3 = bdx * Fx + bdy * Fy + bdz * Fz;
+        k[0] = acx * Ex + acy * Ey + acz * Ez;
+        k[1] = acx * Fx + acy * Fy + acz * Fz + mx * Ex + my * Ey + mz * Ez;
+        k[2] = mx * Fx + my * Fy + mz * Fz + bdx * Ex + bdy * Ey + bdz * Ez;
+        k[3] = bdx * Fx + bdy * Fy + bdz * Fz;
+    }
+
+    /**
+     * The roots in [0, 1] of the cubic k[0..3], ascending, into k[4..6] (at most one per monotone piece,
+     * the pieces split at the derivative's roots, each refined by bisection; a piece starting or ending at
+     * a zero gives that end); returns how many.
+     */
+    static int coplanarRoots(double[] k) {
+        final double k0 = k[0], k1 = k[1], k2 = k[2], k3 = k[3];
         // Monotone pieces of [0, 1]: split at the derivative's roots 3k3 τ² + 2k2 τ + k1 = 0.
         double s1 = 2, s2 = 2;
         double qa = 3 * k3, qb = 2 * k2, qc = k1;
@@ -96,20 +123,19 @@ final class TriangleGeometry {
         } else if (Math.abs(qb) > 1e-300) {
             s1 = -qc / qb;
         }
+        int roots = 0;
         double lo = 0;
         for (int piece = 0; piece < 3; piece++) {
             double hi = piece == 0 ? s1 : piece == 1 ? s2 : 1;
             if (!(hi > lo)) continue;
             hi = Math.min(hi, 1);
             double fl = cubic(k0, k1, k2, k3, lo), fh = cubic(k0, k1, k2, k3, hi);
-            if (fl == 0 || fh == 0 || (fl < 0) != (fh < 0)) {
-                double t = fl == 0 ? lo : fh == 0 ? hi : bisect(k0, k1, k2, k3, lo, hi, fl);
-                if (insideAt(t, p0x, p0y, p0z, p1x, p1y, p1z, v0, v1, a, b, c, slack, scratch)) return t;
-            }
+            if (fl == 0 || fh == 0 || (fl < 0) != (fh < 0))
+                k[4 + roots++] = fl == 0 ? lo : fh == 0 ? hi : bisect(k0, k1, k2, k3, lo, hi, fl);
             lo = hi;
             if (lo >= 1) break;
         }
-        return -1;
+        return roots;
     }
 
     private static double cubic(double k0, double k1, double k2, double k3, double t) { return ((k3 * t + k2) * t + k1) * t + k0; }
@@ -124,8 +150,8 @@ final class TriangleGeometry {
         return 0.5 * (lo + hi);
     }
 
-    /** Whether the point at τ lies inside the triangle at τ (barycentric weights ≥ −slack), in the triangle's plane. */
-    private static boolean insideAt(double t, double p0x, double p0y, double p0z, double p1x, double p1y, double p1z,
+    /** Whether the point at τ lies inside the triangle at τ (barycentric weights ≥ −slack), in the triangle's plane; uses s[0..8]. */
+    static boolean insideAt(double t, double p0x, double p0y, double p0z, double p1x, double p1y, double p1z,
                                     double[] v0, double[] v1, int a, int b, int c, double slack, double[] s) {
         double u = 1 - t;
         for (int d = 0; d < 3; d++) {

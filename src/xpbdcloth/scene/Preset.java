@@ -171,9 +171,12 @@ public final class Preset {
     /** The cloth's thickness against itself (m) and the friction between its layers. */
     public static final class SelfCollisionSpec {
         public final double thickness, staticFriction, kineticFriction;
+        /** Whether the triangles are kept from passing through each other in a substep (a CrossingGuard), not only the particles apart. */
+        public final boolean continuous;
 
-        public SelfCollisionSpec(double thickness, double staticFriction, double kineticFriction) {
+        public SelfCollisionSpec(double thickness, double staticFriction, double kineticFriction, boolean continuous) {
             this.thickness = thickness; this.staticFriction = staticFriction; this.kineticFriction = kineticFriction;
+            this.continuous = continuous;
         }
     }
 

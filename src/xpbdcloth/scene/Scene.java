@@ -136,7 +136,8 @@ public final class Scene {
 
     /** The cloth's self-collision from its rest mesh. */
     public static SelfCollision selfCollision(Cloth cloth, Preset.SelfCollisionSpec s) {
-        return new SelfCollision(cloth.mesh().positions(), s.thickness, s.staticFriction, s.kineticFriction);
+        int[] triangles = s.continuous && cloth.triangles().length > 0 ? cloth.triangles() : null;
+        return new SelfCollision(cloth.mesh().positions(), triangles, s.thickness, s.staticFriction, s.kineticFriction);
     }
 
     /** A built-in scene by name. */

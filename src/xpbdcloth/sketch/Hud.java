@@ -108,7 +108,8 @@ final class Hud {
                                 : fmt("   max link force %.3f N%s", Metrics.maxForce(sim, ConstraintFamily.STRUCTURAL), s.sideBySide() ? " (PBD)" : "")),
                 (s.windOn() ? fmt("wind %.1f m/s towards %.0f°", s.windSpeed(), Math.toDegrees(s.windAngle())) : "wind off")
                         + (s.recordingUsd() ? fmt("   USD recording: %d frames (R ends it)", s.usdFrames()) : "")
-                        + (sim.selfCollision() == null ? "   self-collision off" : fmt("   self-collision %.1f mm, %d pairs near", 1000 * sim.selfCollision().thickness(), sim.selfCollision().pairCount())),
+                        + (sim.selfCollision() == null ? "   self-collision off" : fmt("   self-collision %.1f mm, %d pairs near", 1000 * sim.selfCollision().thickness(), sim.selfCollision().pairCount()))
+                        + (sim.selfCollision() == null || sim.selfCollision().guard() == null ? "" : fmt(", continuous (%d cut-backs)", sim.selfCollision().guard().events())),
                 s.showHelp ? "h: hide the keys" : "h: keys   q: quit",
         };
         LiveFit fit = s.fit();

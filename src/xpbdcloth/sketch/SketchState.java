@@ -396,7 +396,7 @@ public final class SketchState {
 
     /** The preset's self-collision, or half the cloth's shortest edge with layers' friction 0.3 / 0.2. */
     Preset.SelfCollisionSpec selfCollisionSpec() {
-        return preset.selfCollision != null ? preset.selfCollision : new Preset.SelfCollisionSpec(0.5 * preset.cloth.shortestEdge(), 0.3, 0.2);
+        return preset.selfCollision != null ? preset.selfCollision : new Preset.SelfCollisionSpec(0.5 * preset.cloth.shortestEdge(), 0.3, 0.2, false);
     }
 
     public boolean paused() { return paused; }

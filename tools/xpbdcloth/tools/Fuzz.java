@@ -338,8 +338,14 @@ public final class Fuzz implements Callable<Integer> {
             double edge = cloth.mesh().shortestEdge();
             // At most the shortest edge, as the loader demands, and in the presets' range (a line of particles has no face to measure).
             double most = Math.min(edge, 1);
-            if (most >= 1e-4) sim.selfCollision(new xpbdcloth.engine.SelfCollision(cloth.mesh().positions(),
-                    Math.max(1e-4, most * r.nextDouble()), 2 * r.nextDouble(), 2 * r.nextDouble()));
+            if (most >= 1e-4) {
+                double thickness = Math.max(1e-4, most * r.nextDouble()), staticFriction = 2 * r.nextDouble(), kineticFriction = 2 * r.nextDouble();
+                // The continuous triangle guard in one such case of two, drawn from a stream of its own so that
+                // the case's other draws stay what they were.
+                boolean continuous = cloth.triangles().length > 0 && new Random(Double.doubleToLongBits(thickness)).nextBoolean();
+                sim.selfCollision(new xpbdcloth.engine.SelfCollision(cloth.mesh().positions(), continuous ? cloth.triangles() : null,
+                        thickness, staticFriction, kineticFriction));
+            }
         }
         if (r.nextInt(4) == 0) {
             sim.add(new xpbdcloth.engine.Plane(new double[] {0, 2 * r.nextDouble() - 0.5, 0},

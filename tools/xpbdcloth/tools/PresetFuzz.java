@@ -110,6 +110,12 @@ final class PresetFuzz {
             return ", \"depenetrationSpeed\": " + num(v);
         }
 
+        /** Self-collision's continuous triangle guard, said in one case of two (on in one of those two). */
+        String continuous() {
+            if (later.nextBoolean()) return "";
+            return ", \"continuous\": " + later.nextBoolean();
+        }
+
         /** Uniform in the range, or one of its edges one time in four; log-uniform for positive ranges. */
         double draw(Limits.Range range, boolean log) {
             if (r.nextInt(4) == 0) return r.nextBoolean() ? range.lo : range.hi;
@@ -303,7 +309,7 @@ final class PresetFuzz {
                 double t = Math.max(Limits.THICKNESS.lo, Math.min(1.998 * halfEdge, draw(Limits.THICKNESS, true)));
                 if (t <= 1.998 * halfEdge)
                     json.append(", \"selfCollision\": { \"thickness\": ").append(num(t)).append(", \"staticFriction\": ").append(num(draw(Limits.FRICTION, false)))
-                        .append(", \"kineticFriction\": ").append(num(draw(Limits.FRICTION, false))).append(" }");
+                        .append(", \"kineticFriction\": ").append(num(draw(Limits.FRICTION, false))).append(continuous()).append(" }");
             }
             json.append(" }");
             if (r.nextInt(5) == 0 && !mesh) breakOneField();

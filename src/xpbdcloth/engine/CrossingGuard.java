@@ -1,0 +1,483 @@
+package xpbdcloth.engine;
+
+import java.util.Arrays;
+
+/**
+ * Continuous self-collision of the cloth's triangles: a substep may not make the cloth pass through itself.
+ * After the solve, each particle is taken to move in a straight line from where the substep began (x_prev)
+ * to where the solve put it (x). Two triangles that did not intersect at the start can intersect at the end
+ * only if, in between, a vertex passed through a face or an edge through an edge, so those events are all
+ * that is looked for (Provot 1997, "Collision and self-collision handling in cloth model dedicated to
+ * design garments"; Bridson, Fedkiw and Anderson 2002, "Robust treatment of collisions, contact and friction
+ * for cloth animation", §4):
+ * <pre>
+ *   vertex p, face (a, b, c):  det(x_b − x_a, x_c − x_a, x_p − x_a)(τ) = 0 and p inside the face at τ
+ *   edges (p, q) and (r, s):   det(x_q − x_p, x_r − x_p, x_s − x_p)(τ) = 0 and the segments meet at τ
+ * </pre>
+ * each a cubic in τ ∈ (0, 1] ({@link TriangleGeometry#coplanarCubic}).
+ *
+ * <p>Response: the motion of an event's four particles is cut back to {@link #BACKOFF} of the time of
+ * contact τ, less what would bring them within a small gap of each other (each particle's own fraction fᵢ
+ * of its move, xᵢ = x_startᵢ + fᵢ (x_endᵢ − x_startᵢ), multiplied by the smallest over its events; see
+ * {@link #keep}), and the pass is repeated on the cut motion until it finds none. After {@link #CUT_PASSES}
+ * passes an event's particles are put back where the substep began (f = 0): that state was clean, so the
+ * passes end (Bridson et al.'s rigid impact zones play this part there; putting the particles back is the
+ * cruder, always-terminating version: they lose the substep's velocity, an inelastic stop). Pinned
+ * particles (inverse mass 0) move as their scripts say and are never cut. The cloth's thickness is kept by
+ * the particle pairs of {@link SelfCollision} inside the solve; this guard only makes sure that what slips
+ * past them does not pass through.
+ *
+ * <p>Round-off: a cubic within round-off of zero at the substep's end, with the point in the face or the
+ * edges meeting, counts as contact then (a layer landing on one that lies on the floor ends exactly in its
+ * plane); four points within round-off of one plane all substep (layers pressed flat on the floor) are
+ * judged in that plane, edges that meet at the end and did not at the start being put back.
+ *
+ * <p>Candidates: a {@link TriangleGrid} of the triangles' swept boxes, rebuilt every pass; each vertex and
+ * each edge asks it for the triangles its own swept box overlaps, and bounding spheres, the distance at the
+ * start against the most the features can move, and the cubic's Bernstein coefficients clear most before
+ * any root is sought. Edge pairs are tested once (the lower-numbered edge asks). On the solver's team each
+ * thread sweeps its share of vertices and edges into cuts of its own, and the smallest is taken: the same
+ * bits on any thread count. Nothing is allocated in a substep except when a query finds more candidates
+ * than ever before.
+ * Where it fails: a root at τ = 0 (a vertex exactly in a face's plane and inside it at the substep's start)
+ * is taken as a touch, not a crossing; pinned particles pushed through the cloth by their script cannot be
+ * stopped (counted in {@link #unresolved()}); a cloth that is already crossed stays so (it keeps a clean
+ * cloth clean, it does not untangle). Cost: docs/contacts.md.
+ */
+public final class CrossingGuard implements Team.Job {
+    /** The share of the time to contact an event's particles keep of their move. */
+    static final double BACKOFF = 0.9;
+    /** Passes that cut motion back before an event's particles are put back where the substep began. */
+    static final int CUT_PASSES = 4;
+    /** At most this many passes; only pinned particles moved by script through the cloth can use them all. */
+    static final int MAX_PASSES = 12;
+    /** Barycentric and segment-parameter slack: an event on a shared edge or vertex is not missed by round-off. */
+    private static final double SLACK = 1e-6;
+    /** Boxes are grown by this much (m) so round-off in a refit loses no candidate. */
+    private static final double PAD = 1e-9;
+    /** Round-off of a coplanarity determinant, relative to its points' size cubed (a few hundred ulps). */
+    static final double ROUND_OFF = 1e-13;
+    /** The gap an event's features keep, in mean rest edges: far above round-off, far below any thickness. */
+    static final double GAP_EDGES = 1e-3;
+    /** The grid's cells, in mean rest edges. */
+    static final double CELL_EDGES = 1;
+
+    private final int particles;
+    private final int[] triangles;
+    /** Each edge's two vertices, and each triangle's three edges (sides ab, bc, ca). */
+    private final int[] edges, triangleEdges;
+    private final TriangleGrid grid;
+    /** The closest an event's features are let come, m. */
+    private final double gap;
+    private final double[] start, end, fraction;
+    /** Each thread's pass: its cuts, scratch, queries and events. */
+    private Share[] shares;
+    /** The pass the team's threads run: the positions, inverse masses and whether events put their particles back. */
+    private double[] passX, passW;
+    private boolean passPutsBack;
+    /** Each particle's move this pass, and each triangle's swept box (min xyz, max xyz). */
+    private final double[] moved, triangleBox;
+    /**
+     * Each edge's and then each triangle's bounding sphere at the substep's start (centre, radius: 4 numbers),
+     * and the most any of its vertices moves this pass: two features whose spheres are farther apart than
+     * both can move cannot meet, which clears most candidates before any exact distance.
+     */
+    private final double[] sphere, edgeMove, triangleMove;
+
+    private long events, unresolved, passes;
+
+    /**
+     * @param triangles the cloth's triangles, 3 particle indices each
+     * @param rest      the rest positions, xyz interleaved (the hierarchy's shape; refitted as the cloth moves)
+     */
+    public CrossingGuard(int[] triangles, double[] rest) {
+        if (triangles == null || triangles.length % 3 != 0)
+            throw new IllegalArgumentException("triangles must hold 3 particle indices each, had " + (triangles == null ? "null" : triangles.length + " indices"));
+        if (rest == null || rest.length % 3 != 0)
+            throw new IllegalArgumentException("rest must hold x, y, z per particle, had " + (rest == null ? "null" : rest.length + " numbers"));
+        particles = rest.length / 3;
+        for (int k = 0; k < triangles.length; k++)
+            if (triangles[k] < 0 || triangles[k] >= particles)
+                throw new IllegalArgumentException("triangles[" + k + "] must be a particle in [0, " + particles + "), was " + triangles[k]);
+        this.triangles = triangles.clone();
+        triangleEdges = new int[triangles.length];
+        edges = numberEdges(this.triangles, particles, triangleEdges);
+        final double mean = meanEdge(edges, rest);
+        grid = new TriangleGrid(CELL_EDGES * mean);
+        gap = GAP_EDGES * mean;
+        start = new double[3 * particles];
+        end = new double[3 * particles];
+        fraction = new double[particles];
+        shares = new Share[] {new Share()};
+        moved = new double[particles];
+        triangleBox = new double[2 * this.triangles.length];
+        sphere = new double[4 * (edges.length / 2 + this.triangles.length / 3)];
+        edgeMove = new double[edges.length / 2];
+        triangleMove = new double[this.triangles.length / 3];
+    }
+
+    /** The particle count it was made for. */
+    public int particleCount() { return particles; }
+
+    /** Events found and cut back since it was made (one per vertex–face or edge–edge contact per pass). */
+    public long events() { return events; }
+
+    /** Events still found after the last pass, since it was made: only pinned particles driven through the cloth leave any. */
+    public long unresolved() { return unresolved; }
+
+    /** Passes since it was made (one a substep when nothing touches). */
+    public long passes() { return passes; }
+
+    /**
+     * Keeps where the substep begins (the prediction's x_prev, before any contact moves x_prev to undo a
+     * depth the particle started at): the clean state the motion is measured from.
+     */
+    void begin(Particles p) { System.arraycopy(p.prev, 0, start, 0, 3 * particles); }
+
+    /**
+     * Cuts back the substep's motion (from {@link #begin}'s positions to x) until no vertex passes through a
+     * face and no edge through an edge; the passes on the team's threads if given (the same cuts on any
+     * count: each share lowers its own, and the smallest is taken).
+     */
+    void hold(Particles p, Team team) {
+        final int n = particles, threads = team == null ? 1 : team.threads();
+        final double[] x = p.x, w = p.w;
+        if (shares.length != threads) {
+            shares = new Share[threads];
+            for (int t = 0; t < threads; t++) shares[t] = new Share();
+        }
+        System.arraycopy(x, 0, end, 0, 3 * n);
+        Arrays.fill(fraction, 1);
+        passX = x;
+        passW = w;
+        int found = 0;
+        for (int pass = 0; pass < MAX_PASSES; pass++) {
+            passes++;
+            sweptBoxes(start, x);
+            grid.build(triangleBox, triangles.length / 3);
+            passPutsBack = pass >= CUT_PASSES;
+            if (threads == 1) sweep(shares[0], 0, 1);
+            else team.run(this);
+            found = 0;
+            for (Share sh : shares) found += sh.found;
+            if (found == 0) return;
+            events += found;
+            for (int i = 0; i < n; i++) {
+                double c = shares[0].cut[i];
+                for (int t = 1; t < threads; t++) c = Math.min(c, shares[t].cut[i]);
+                if (c == 1 || w[i] == 0) continue;
+                fraction[i] *= c;
+                final int k = 3 * i;
+                final double f = fraction[i];
+                x[k] = start[k] + f * (end[k] - start[k]);
+                x[k + 1] = start[k + 1] + f * (end[k + 1] - start[k + 1]);
+                x[k + 2] = start[k + 2] + f * (end[k + 2] - start[k + 2]);
+            }
+        }
+        unresolved += found;
+    }
+
+    /** A pass on the team: each thread its share of the vertices and of the edges. */
+    @Override public void work(int id, Team team) {
+        sweep(shares[id], id, team.threads());
+        team.await();
+    }
+
+    /**
+     * One pass over share id's vertices against the faces and its edges against the edges (ascending ranges);
+     * each event lowers its particles' cut in the share's own cuts, the events counted in its found.
+     */
+    private void sweep(Share sh, int id, int count) {
+        final double[] x = passX, w = passW, start = this.start, scratch = sh.scratch, closest = sh.closest;
+        final boolean putBack = passPutsBack;
+        Arrays.fill(sh.cut, 1);
+        final int edgeCount = edges.length / 2;
+        final double[] sphere = this.sphere;
+        int found = 0;
+        for (int i = (int) ((long) particles * id / count), last = (int) ((long) particles * (id + 1) / count); i < last; i++) {
+            final int k = 3 * i;
+            final int m = query(sh, start, x, i, i);
+            final int[] candidates = sh.query.found();
+            for (int c = 0; c < m; c++) {
+                final int t = candidates[c], a = triangles[3 * t], b = triangles[3 * t + 1], d = triangles[3 * t + 2];
+                if (i == a || i == b || i == d || w[i] + w[a] + w[b] + w[d] == 0 || !sh.overlaps(triangleBox, t)) continue;
+                final int o = 4 * (edgeCount + t);
+                final double cx = start[k] - sphere[o], cy = start[k + 1] - sphere[o + 1], cz = start[k + 2] - sphere[o + 2];
+                final double bound = sphere[o + 3] + moved[i] + triangleMove[t] + PAD;
+                if (cx * cx + cy * cy + cz * cz > bound * bound) continue;
+                // Apart by more than they move (any point of the face moves at most as far as its fastest corner): no contact.
+                TriangleGeometry.closestPoint(start[k], start[k + 1], start[k + 2], start, a, b, d, closest);
+                final double gx = closest[0] - start[k], gy = closest[1] - start[k + 1], gz = closest[2] - start[k + 2];
+                final double reach = moved[i] + triangleMove[t] + PAD, apart2 = gx * gx + gy * gy + gz * gz;
+                if (apart2 > reach * reach) continue;
+                TriangleGeometry.coplanarCubic(start, x, a, b, d, start[k], start[k + 1], start[k + 2], x[k], x[k + 1], x[k + 2], scratch);
+                final double noise = roundOff(start, a, b, d, i);
+                if (oneSigned(scratch, noise)) continue;
+                double tau = firstFaceContact(i, a, b, d, start, x, noise, scratch);
+                if (tau < 0) continue;
+                found++;
+                sh.stop(i, a, b, d, putBack ? 0 : keep(tau, apart2));
+            }
+        }
+        for (int e = (int) ((long) edgeCount * id / count), last = (int) ((long) edgeCount * (id + 1) / count); e < last; e++) {
+            final int p = edges[2 * e], q = edges[2 * e + 1];
+            final int[] edgeSeen = sh.edgeSeen;
+            if (++sh.edgeStamp == Integer.MAX_VALUE) { Arrays.fill(edgeSeen, 0); sh.edgeStamp = 1; }
+            final int stamp = sh.edgeStamp;
+            final int m = query(sh, start, x, p, q);
+            final int[] candidates = sh.query.found();
+            for (int c = 0; c < m; c++) {
+                final int t = candidates[c];
+                if (!sh.overlaps(triangleBox, t)) continue;
+                for (int side = 0; side < 3; side++) {
+                    final int f = triangleEdges[3 * t + side];
+                    if (f <= e || edgeSeen[f] == stamp) continue;
+                    edgeSeen[f] = stamp;
+                    final int r = edges[2 * f], s = edges[2 * f + 1];
+                    if (r == p || r == q || s == p || s == q || w[p] + w[q] + w[r] + w[s] == 0) continue;
+                    final double reach = edgeMove[e] + edgeMove[f] + PAD;
+                    // Bounding spheres at the start farther apart than the features can move: no contact.
+                    final double cx = sphere[4 * e] - sphere[4 * f], cy = sphere[4 * e + 1] - sphere[4 * f + 1], cz = sphere[4 * e + 2] - sphere[4 * f + 2];
+                    final double bound = sphere[4 * e + 3] + sphere[4 * f + 3] + reach;
+                    if (cx * cx + cy * cy + cz * cz > bound * bound) continue;
+                    final double apart2 = segmentDistanceSquared(0, p, q, r, s, start, start);
+                    if (apart2 > reach * reach) continue;
+                    TriangleGeometry.coplanarCubic(start, x, p, q, r, start[3 * s], start[3 * s + 1], start[3 * s + 2], x[3 * s], x[3 * s + 1], x[3 * s + 2], scratch);
+                    final double noise = roundOff(start, p, q, r, s);
+                    if (flat(scratch, noise)) {
+                        // Four points in one plane all the substep (a layer pressed flat on the floor): the cubic is
+                        // round-off and its roots say nothing; edges that cross in the plane at the end and did not at
+                        // the start crossed during it. Their particles go back where the substep began.
+                        if (segmentsMeet(1, p, q, r, s, start, x) && !segmentsMeet(0, p, q, r, s, start, x)) {
+                            found++;
+                            sh.stop(p, q, r, s, 0);
+                        }
+                        continue;
+                    }
+                    if (oneSigned(scratch, noise)) continue;
+                    double tau = firstEdgeContact(p, q, r, s, start, x, noise, scratch);
+                    if (tau < 0) continue;
+                    found++;
+                    sh.stop(p, q, r, s, putBack ? 0 : keep(tau, apart2));
+                }
+            }
+        }
+        sh.found = found;
+    }
+
+    /** The triangles whose swept boxes overlap the swept box of particles i and j (one particle when i == j), into candidates. */
+    private int query(Share sh, double[] start, double[] x, int i, int j) {
+        final int a = 3 * i, b = 3 * j;
+        final double lx = Math.min(Math.min(start[a], x[a]), Math.min(start[b], x[b])) - PAD;
+        final double ly = Math.min(Math.min(start[a + 1], x[a + 1]), Math.min(start[b + 1], x[b + 1])) - PAD;
+        final double lz = Math.min(Math.min(start[a + 2], x[a + 2]), Math.min(start[b + 2], x[b + 2])) - PAD;
+        final double hx = Math.max(Math.max(start[a], x[a]), Math.max(start[b], x[b])) + PAD;
+        final double hy = Math.max(Math.max(start[a + 1], x[a + 1]), Math.max(start[b + 1], x[b + 1])) + PAD;
+        final double hz = Math.max(Math.max(start[a + 2], x[a + 2]), Math.max(start[b + 2], x[b + 2])) + PAD;
+        sh.lx = lx; sh.ly = ly; sh.lz = lz; sh.hx = hx; sh.hy = hy; sh.hz = hz;
+        return grid.query(sh.query, lx, ly, lz, hx, hy, hz);
+    }
+
+    /**
+     * The first root τ ∈ (0, 1] of the cubic in scratch at which vertex i is inside face (a, b, c), or 1 if
+     * the cubic ends within round-off of 0 with the vertex inside (it ends in the face: touching, which the
+     * next substep would turn into a crossing); −1 if none.
+     */
+    private static double firstFaceContact(int i, int a, int b, int c, double[] start, double[] x, double noise, double[] scratch) {
+        final double end = scratch[0] + scratch[1] + scratch[2] + scratch[3];
+        final int roots = TriangleGeometry.coplanarRoots(scratch), k = 3 * i;
+        final double t0 = scratch[4], t1 = scratch[5], t2 = scratch[6]; // insideAt writes over the scratch
+        for (int r = 0; r < roots + 1; r++) {
+            if (r == roots && !(Math.abs(end) <= noise)) break;
+            final double t = r == roots ? 1 : r == 0 ? t0 : r == 1 ? t1 : t2;
+            if (t > 0 && TriangleGeometry.insideAt(t, start[k], start[k + 1], start[k + 2], x[k], x[k + 1], x[k + 2], start, x, a, b, c, SLACK, scratch))
+                return t;
+        }
+        return -1;
+    }
+
+    /** The first root τ ∈ (0, 1] of the cubic in scratch at which edges (p, q) and (r, s) meet, or 1 if it ends within round-off of 0 with them meeting; −1 if none. */
+    private static double firstEdgeContact(int p, int q, int r, int s, double[] start, double[] x, double noise, double[] scratch) {
+        final double end = scratch[0] + scratch[1] + scratch[2] + scratch[3];
+        final int roots = TriangleGeometry.coplanarRoots(scratch);
+        for (int k = 0; k < roots; k++) {
+            final double t = scratch[4 + k];
+            if (t > 0 && segmentsMeet(t, p, q, r, s, start, x)) return t;
+        }
+        return Math.abs(end) <= noise && segmentsMeet(1, p, q, r, s, start, x) ? 1 : -1;
+    }
+
+    /**
+     * What round-off can make of the coplanarity determinant of a, b, c and p at the substep's start (the
+     * cubic's terms are products of three of their differences): {@link #ROUND_OFF} times the cube of
+     * their size. A cubic within it of 0 says nothing about which side p is on.
+     */
+    private static double roundOff(double[] v, int a, int b, int c, int p) {
+        final int A = 3 * a, B = 3 * b, C = 3 * c, P = 3 * p;
+        final double size2 = squared(v[B] - v[A], v[B + 1] - v[A + 1], v[B + 2] - v[A + 2]) + squared(v[C] - v[A], v[C + 1] - v[A + 1], v[C + 2] - v[A + 2])
+                + squared(v[P] - v[A], v[P + 1] - v[A + 1], v[P + 2] - v[A + 2]);
+        return ROUND_OFF * size2 * Math.sqrt(size2);
+    }
+
+    /** Whether segments pq and rs, at τ of their motion (coplanar there, so they meet if this close), come within a millionth of their lengths. */
+    static boolean segmentsMeet(double t, int p, int q, int r, int s, double[] start, double[] x) {
+        final int P = 3 * p, Q = 3 * q, R = 3 * r, S = 3 * s;
+        final double u = 1 - t;
+        final double a = Math.sqrt(squared(u * (start[Q] - start[P]) + t * (x[Q] - x[P]), u * (start[Q + 1] - start[P + 1]) + t * (x[Q + 1] - x[P + 1]), u * (start[Q + 2] - start[P + 2]) + t * (x[Q + 2] - x[P + 2])));
+        final double e = Math.sqrt(squared(u * (start[S] - start[R]) + t * (x[S] - x[R]), u * (start[S + 1] - start[R + 1]) + t * (x[S + 1] - x[R + 1]), u * (start[S + 2] - start[R + 2]) + t * (x[S + 2] - x[R + 2])));
+        final double tolerance = SLACK * (a + e);
+        return segmentDistanceSquared(t, p, q, r, s, start, x) <= tolerance * tolerance;
+    }
+
+    /**
+     * The squared distance between segments pq and rs at τ of their motion (from v0 to v1): closest points of
+     * two segments, Ericson 2005, "Real-Time Collision Detection", §5.1.9. A collapsed segment is taken as
+     * far (∞): its vertices' own face events cover it.
+     */
+    static double segmentDistanceSquared(double t, int p, int q, int r, int s, double[] v0, double[] v1) {
+        final double u = 1 - t;
+        final int P = 3 * p, Q = 3 * q, R = 3 * r, S = 3 * s;
+        final double px = u * v0[P] + t * v1[P], py = u * v0[P + 1] + t * v1[P + 1], pz = u * v0[P + 2] + t * v1[P + 2];
+        final double rx = u * v0[R] + t * v1[R], ry = u * v0[R + 1] + t * v1[R + 1], rz = u * v0[R + 2] + t * v1[R + 2];
+        final double d1x = u * v0[Q] + t * v1[Q] - px, d1y = u * v0[Q + 1] + t * v1[Q + 1] - py, d1z = u * v0[Q + 2] + t * v1[Q + 2] - pz;
+        final double d2x = u * v0[S] + t * v1[S] - rx, d2y = u * v0[S + 1] + t * v1[S + 1] - ry, d2z = u * v0[S + 2] + t * v1[S + 2] - rz;
+        final double ox = px - rx, oy = py - ry, oz = pz - rz;
+        final double a = d1x * d1x + d1y * d1y + d1z * d1z, e = d2x * d2x + d2y * d2y + d2z * d2z;
+        if (!(a > 0) || !(e > 0)) return Double.POSITIVE_INFINITY;
+        final double b = d1x * d2x + d1y * d2y + d1z * d2z, c = d1x * ox + d1y * oy + d1z * oz, f = d2x * ox + d2y * oy + d2z * oz;
+        final double denom = a * e - b * b;
+        double sc = denom > 0 ? clamp((b * f - c * e) / denom) : 0;
+        double tc = (b * sc + f) / e;
+        if (tc < 0) { tc = 0; sc = clamp(-c / a); }
+        else if (tc > 1) { tc = 1; sc = clamp((b - c) / a); }
+        return squared(ox + sc * d1x - tc * d2x, oy + sc * d1y - tc * d2y, oz + sc * d1z - tc * d2z);
+    }
+
+    private static double squared(double x, double y, double z) { return x * x + y * y + z * z; }
+
+
+    /**
+     * Whether the cubic k[0..3] is round-off all substep: its Bernstein coefficients (the control points of
+     * the curve over [0, 1], which lies in their convex hull) all within ten times the round-off bound, four
+     * points in one plane over the whole substep.
+     */
+    private static boolean flat(double[] k, double noise) {
+        final double bound = 10 * noise;
+        final double b0 = k[0], b1 = k[0] + k[1] / 3, b2 = k[0] + (2 * k[1] + k[2]) / 3, b3 = k[0] + k[1] + k[2] + k[3];
+        return Math.abs(b0) <= bound && Math.abs(b1) <= bound && Math.abs(b2) <= bound && Math.abs(b3) <= bound;
+    }
+
+    /**
+     * Whether the cubic k[0..3] keeps one sign on [0, 1], clear of round-off: its Bernstein coefficients all
+     * beyond ±noise on one side (Tang, Manocha and Tong 2010, "Fast continuous collision detection using
+     * deforming non-penetration filters", use the same bound).
+     */
+    static boolean oneSigned(double[] k, double noise) {
+        final double b0 = k[0], b1 = k[0] + k[1] / 3, b2 = k[0] + (2 * k[1] + k[2]) / 3, b3 = k[0] + k[1] + k[2] + k[3];
+        return (b0 > noise && b1 > noise && b2 > noise && b3 > noise) || (b0 < -noise && b1 < -noise && b2 < -noise && b3 < -noise);
+    }
+
+    /** Each particle's move and each triangle's box over the substep's motion (start → x), padded. */
+    private void sweptBoxes(double[] start, double[] x) {
+        for (int i = 0; i < particles; i++) {
+            final int k = 3 * i;
+            moved[i] = Math.sqrt(squared(x[k] - start[k], x[k + 1] - start[k + 1], x[k + 2] - start[k + 2]));
+        }
+        final int edgeCount = edges.length / 2;
+        for (int e = 0; e < edgeCount; e++) {
+            final int p = 3 * edges[2 * e], q = 3 * edges[2 * e + 1], o = 4 * e;
+            sphere[o] = 0.5 * (start[p] + start[q]);
+            sphere[o + 1] = 0.5 * (start[p + 1] + start[q + 1]);
+            sphere[o + 2] = 0.5 * (start[p + 2] + start[q + 2]);
+            sphere[o + 3] = 0.5 * Math.sqrt(squared(start[q] - start[p], start[q + 1] - start[p + 1], start[q + 2] - start[p + 2]));
+            edgeMove[e] = Math.max(moved[edges[2 * e]], moved[edges[2 * e + 1]]);
+        }
+        for (int t = 0, count = triangles.length / 3; t < count; t++) {
+            // Centred on the centroid, out to the farthest corner.
+            final int a = 3 * triangles[3 * t], b3 = 3 * triangles[3 * t + 1], c = 3 * triangles[3 * t + 2], o = 4 * (edgeCount + t);
+            final double mx = (start[a] + start[b3] + start[c]) / 3, my = (start[a + 1] + start[b3 + 1] + start[c + 1]) / 3, mz = (start[a + 2] + start[b3 + 2] + start[c + 2]) / 3;
+            sphere[o] = mx; sphere[o + 1] = my; sphere[o + 2] = mz;
+            sphere[o + 3] = Math.sqrt(Math.max(squared(start[a] - mx, start[a + 1] - my, start[a + 2] - mz),
+                    Math.max(squared(start[b3] - mx, start[b3 + 1] - my, start[b3 + 2] - mz), squared(start[c] - mx, start[c + 1] - my, start[c + 2] - mz))));
+            triangleMove[t] = Math.max(moved[triangles[3 * t]], Math.max(moved[triangles[3 * t + 1]], moved[triangles[3 * t + 2]]));
+            final int b = 6 * t;
+            for (int d = 0; d < 3; d++) {
+                double lo = Double.MAX_VALUE, hi = -Double.MAX_VALUE;
+                for (int corner = 0; corner < 3; corner++) {
+                    final int v = 3 * triangles[3 * t + corner] + d;
+                    lo = Math.min(lo, Math.min(start[v], x[v]));
+                    hi = Math.max(hi, Math.max(start[v], x[v]));
+                }
+                triangleBox[b + d] = lo - PAD;
+                triangleBox[b + 3 + d] = hi + PAD;
+            }
+        }
+    }
+
+
+    private static double clamp(double v) { return v < 0 ? 0 : v > 1 ? 1 : v; }
+
+    /**
+     * The share of the move an event's particles keep: {@link #BACKOFF} of the time of contact τ, less the
+     * share that would bring them within the gap g of each other (their distance d₀ at the start closing
+     * about linearly until τ: kept τ (1 − g/d₀)); nothing if they start within it. Without the gap a pair
+     * pushed together substep after substep would close to a tenth of its distance each time, down to
+     * round-off, where the cubic no longer sees which side is which.
+     */
+    private double keep(double tau, double apart2) {
+        final double apart = Math.sqrt(apart2);
+        return apart <= gap ? 0 : BACKOFF * tau * (1 - gap / apart);
+    }
+
+
+    /** One thread's part of a pass. */
+    private final class Share {
+        final double[] cut = new double[particles], scratch = new double[9], closest = new double[6];
+        final int[] edgeSeen = new int[edges.length / 2];
+        int edgeStamp, found;
+        final TriangleGrid.Query query = new TriangleGrid.Query();
+        /** The last query's box. */
+        double lx, ly, lz, hx, hy, hz;
+
+        /** Whether triangle t's swept box overlaps the last query's box. */
+        boolean overlaps(double[] box, int t) {
+            final int b = 6 * t;
+            return !(box[b] > hx || box[b + 3] < lx || box[b + 1] > hy || box[b + 4] < ly || box[b + 2] > hz || box[b + 5] < lz);
+        }
+
+        /** Lowers the cut of an event's four particles to f (0: back to the substep's start). */
+        void stop(int i, int j, int k, int l, double f) {
+            cut[i] = Math.min(cut[i], f);
+            cut[j] = Math.min(cut[j], f);
+            cut[k] = Math.min(cut[k], f);
+            cut[l] = Math.min(cut[l], f);
+        }
+    }
+
+    /** The mean length of the edges at rest (1 for a mesh without any). */
+    private static double meanEdge(int[] edges, double[] rest) {
+        double sum = 0;
+        for (int e = 0; e < edges.length; e += 2)
+            sum += Math.sqrt(squared(rest[3 * edges[e]] - rest[3 * edges[e + 1]], rest[3 * edges[e] + 1] - rest[3 * edges[e + 1] + 1], rest[3 * edges[e] + 2] - rest[3 * edges[e + 1] + 2]));
+        return edges.length == 0 || !(sum > 0) ? 1 : sum / (edges.length / 2);
+    }
+
+    /** Numbers the edges of the triangles (sides ab, bc, ca into triangleEdges); returns their two vertices each, lower first. */
+    private static int[] numberEdges(int[] triangles, int vertexCount, int[] triangleEdges) {
+        java.util.HashMap<Long, Integer> index = new java.util.HashMap<>();
+        int[] ends = new int[2 * triangles.length];
+        for (int k = 0; k < triangles.length; k++) {
+            int a = triangles[k], b = triangles[k % 3 == 2 ? k - 2 : k + 1];
+            long key = (long) Math.min(a, b) * vertexCount + Math.max(a, b);
+            Integer e = index.get(key);
+            if (e == null) {
+                e = index.size();
+                index.put(key, e);
+                ends[2 * e] = Math.min(a, b);
+                ends[2 * e + 1] = Math.max(a, b);
+            }
+            triangleEdges[k] = e;
+        }
+        return Arrays.copyOf(ends, 2 * index.size());
+    }
+}

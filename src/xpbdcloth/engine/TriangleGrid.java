@@ -1,0 +1,114 @@
+package xpbdcloth.engine;
+
+import java.util.Arrays;
+
+/**
+ * Triangles' boxes in a uniform grid of hashed cells over flat arrays, rebuilt whenever the boxes move: a
+ * box is listed in every cell it overlaps (counting-sorted by bucket), and a query box reads the buckets of
+ * the cells it overlaps, each triangle once. With cells about a triangle's size a box spans one to eight
+ * cells, and a query reads a few triangles where a tree's walk visits dozens of nodes. A box spanning more
+ * than {@link #MOST_CELLS} cells (a triangle moving many cells in a substep) is kept in a list every query
+ * reads instead. The arrays grow only when a build needs more than any before, so steady use allocates nothing.
+ */
+final class TriangleGrid {
+    /** A box spanning more cells than this is read by every query rather than listed in each of its cells. */
+    static final int MOST_CELLS = 64;
+
+    private final double cell;
+    private int[] bucketStart = new int[1], listed = new int[0], large = new int[0];
+    private int largeCount, count;
+
+    /** One thread's queries: which triangles the current one has found (each once) and the list of them. */
+    static final class Query {
+        private int[] seen = new int[0];
+        private int stamp;
+        private int[] found = new int[64];
+
+        /** The triangles the last query found; valid until the next. */
+        int[] found() { return found; }
+
+        private int add(int t, int count) {
+            if (seen[t] == stamp) return count;
+            seen[t] = stamp;
+            if (count == found.length) found = Arrays.copyOf(found, 2 * count);
+            found[count] = t;
+            return count + 1;
+        }
+    }
+
+    /** @param cell the cells' side, m (about a triangle's size) */
+    TriangleGrid(double cell) {
+        this.cell = Check.positive("cell", cell);
+    }
+
+    /** Lists triangles 0 .. count − 1 by their boxes (6 numbers each: min xyz, max xyz). */
+    void build(double[] boxes, int count) {
+        this.count = count;
+        if (large.length < count) large = new int[count];
+        long entries = 0;
+        largeCount = 0;
+        for (int t = 0; t < count; t++) {
+            long cells = cellsOf(boxes, t);
+            if (cells > MOST_CELLS) large[largeCount++] = t;
+            else entries += cells;
+        }
+        final int table = Integer.highestOneBit((int) Math.max(1, Math.min(1 << 28, 2 * entries - 1))) << 1;
+        if (bucketStart.length != table + 1) bucketStart = new int[table + 1];
+        else Arrays.fill(bucketStart, 0);
+        if (listed.length < entries) listed = new int[(int) entries];
+        for (int pass = 0; pass < 2; pass++) {
+            for (int t = 0; t < count; t++) {
+                final int b = 6 * t;
+                if (cellsOf(boxes, t) > MOST_CELLS) continue;
+                final int x0 = index(boxes[b]), x1 = index(boxes[b + 3]), y0 = index(boxes[b + 1]), y1 = index(boxes[b + 4]);
+                final int z0 = index(boxes[b + 2]), z1 = index(boxes[b + 5]);
+                for (long cx = x0; cx <= x1; cx++) // long: an index saturated at Integer.MAX_VALUE still ends the loop
+                    for (long cy = y0; cy <= y1; cy++)
+                        for (long cz = z0; cz <= z1; cz++) {
+                            final int h = hash((int) cx, (int) cy, (int) cz, table);
+                            if (pass == 0) bucketStart[h]++;
+                            else listed[--bucketStart[h]] = t;
+                        }
+            }
+            // After counting: running ends, so placing each entry from its bucket's end down leaves its start.
+            if (pass == 0) for (int c = 0, sum = 0; c <= table; c++) { sum += bucketStart[c]; bucketStart[c] = sum; }
+        }
+    }
+
+    /**
+     * The triangles whose cells the box [lo, hi] overlaps, each once, into q's {@link Query#found()}; returns
+     * how many (a superset of those whose boxes overlap it). Queries with their own q may run on several threads.
+     */
+    int query(Query q, double lx, double ly, double lz, double hx, double hy, double hz) {
+        if (q.seen.length < this.count) { q.seen = new int[this.count]; q.stamp = 0; }
+        if (++q.stamp == Integer.MAX_VALUE) { Arrays.fill(q.seen, 0); q.stamp = 1; }
+        int count = 0;
+        for (int k = 0; k < largeCount; k++) count = q.add(large[k], count);
+        final int table = bucketStart.length - 1;
+        final int x0 = index(lx), x1 = index(hx), y0 = index(ly), y1 = index(hy), z0 = index(lz), z1 = index(hz);
+        if (((double) x1 - x0 + 1) * ((double) y1 - y0 + 1) * ((double) z1 - z0 + 1) > table) {
+            // A query box larger than the table: every bucket once.
+            for (int s = 0; s < bucketStart[table]; s++) count = q.add(listed[s], count);
+            return count;
+        }
+        for (long cx = x0; cx <= x1; cx++)
+            for (long cy = y0; cy <= y1; cy++)
+                for (long cz = z0; cz <= z1; cz++) {
+                    final int h = hash((int) cx, (int) cy, (int) cz, table);
+                    for (int s = bucketStart[h], e = bucketStart[h + 1]; s < e; s++) count = q.add(listed[s], count);
+                }
+        return count;
+    }
+
+    private long cellsOf(double[] boxes, int t) {
+        final int b = 6 * t;
+        return ((long) index(boxes[b + 3]) - index(boxes[b]) + 1) * ((long) index(boxes[b + 4]) - index(boxes[b + 1]) + 1)
+                * ((long) index(boxes[b + 5]) - index(boxes[b + 2]) + 1);
+    }
+
+    private int index(double v) { return (int) Math.floor(v / cell); }
+
+    private static int hash(int x, int y, int z, int table) {
+        return ((x * 92837111) ^ (y * 689287499) ^ (z * 283923481)) & (table - 1);
+    }
+}
