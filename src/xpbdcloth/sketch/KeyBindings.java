@@ -70,7 +70,7 @@ public final class KeyBindings {
         b.add(new KeyBinding('d', "wind direction +45°", SketchState::rotateWind, SketchState::windAngle));
         b.add(new KeyBinding('e', "wind speed +0.5 m/s", s -> s.changeWindSpeed(1), SketchState::windSpeed));
         b.add(new KeyBinding('E', "wind speed -0.5 m/s", s -> s.changeWindSpeed(-1), SketchState::windSpeed));
-        b.add(new KeyBinding('z', "self-collision on/off (the cloth keeps its thickness from itself)", SketchState::toggleSelfCollision, SketchState::selfCollisionOn));
+        b.add(new KeyBinding('z', "self-collision: off, particle pairs, pairs + continuous triangle guard", SketchState::cycleSelfCollision, SketchState::selfCollisionState));
         b.add(new KeyBinding('x', "wireframe coloured by strain", s -> s.wireframe = !s.wireframe, s -> s.wireframe));
         b.add(new KeyBinding('o', "particles (pinned in orange)", s -> s.showParticles = !s.showParticles, s -> s.showParticles));
         b.add(new KeyBinding('s', "spheres", s -> s.showSpheres = !s.showSpheres, s -> s.showSpheres));

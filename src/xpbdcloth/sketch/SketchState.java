@@ -7,6 +7,7 @@ import java.util.Map;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.ConstraintMode;
 import xpbdcloth.engine.Material;
+import xpbdcloth.engine.SelfCollision;
 import xpbdcloth.engine.Simulation;
 import xpbdcloth.engine.SolverSettings;
 import xpbdcloth.engine.SolverType;
@@ -90,6 +91,7 @@ public final class SketchState {
         materials.putAll(p.families);
         windOn = p.wind != null;
         selfCollisionOn = p.selfCollision != null;
+        continuousOn = p.selfCollision != null && p.selfCollision.continuous;
         double[] u = p.wind == null ? new double[] {2, 0, 1.5} : p.wind.velocity;
         windAngle = Math.atan2(u[2], u[0]);
         windSpeed = Math.hypot(u[0], u[2]);
@@ -115,8 +117,9 @@ public final class SketchState {
             materials.forEach(s.simulation()::setMaterial);
             if (fabric != null && s.fabric() != fabric) s.useFabric(fabric);
             s.setWind(windOn);
-            boolean has = s.simulation().selfCollision() != null;
-            if (selfCollisionOn != has) s.simulation().selfCollision(selfCollisionOn ? Scene.selfCollision(s.cloth(), selfCollisionSpec()) : null);
+            SelfCollision self = s.simulation().selfCollision();
+            if (selfCollisionOn != (self != null) || (self != null && continuousOn != (self.guard() != null)))
+                s.simulation().selfCollision(selfCollisionOn ? Scene.selfCollision(s.cloth(), selfCollisionSpec()) : null);
             s.wind().setVelocity(windSpeed * Math.cos(windAngle), 0, windSpeed * Math.sin(windAngle));
         }
     }
@@ -384,19 +387,31 @@ public final class SketchState {
     public void togglePause() { paused = !paused; }
 
     private boolean selfCollisionOn;
+    private boolean continuousOn;
 
-    public boolean selfCollisionOn() { return selfCollisionOn; }
-
-    /** The cloth keeps its thickness from itself, or passes through itself (no reset). */
-    public void toggleSelfCollision() {
-        selfCollisionOn = !selfCollisionOn;
+    /**
+     * Self-collision off, then particle pairs (the cloth keeps its thickness from itself), then pairs and the
+     * continuous triangle guard (no triangle passes through another in a substep; slower), then off again;
+     * no reset.
+     */
+    public void cycleSelfCollision() {
+        if (!selfCollisionOn) { selfCollisionOn = true; continuousOn = false; }
+        else if (!continuousOn) continuousOn = true;
+        else { selfCollisionOn = false; continuousOn = false; }
         applyAll();
-        say(selfCollisionOn ? String.format(java.util.Locale.ROOT, "self-collision on: thickness %.1f mm", 1000 * selfCollisionSpec().thickness) : "self-collision off");
+        say(!selfCollisionOn ? "self-collision off"
+                : String.format(java.util.Locale.ROOT, "self-collision on: thickness %.1f mm, %s", 1000 * selfCollisionSpec().thickness,
+                        continuousOn ? "particle pairs and the continuous triangle guard (slower)" : "particle pairs"));
     }
 
-    /** The preset's self-collision, or half the cloth's shortest edge with layers' friction 0.3 / 0.2. */
+    /** What z has chosen: off, particle pairs, or pairs and the continuous guard. */
+    public String selfCollisionState() { return !selfCollisionOn ? "off" : continuousOn ? "continuous" : "particle pairs"; }
+
+    /** The preset's self-collision, or half the cloth's shortest edge with layers' friction 0.3 / 0.2; the guard as the keys set it. */
     Preset.SelfCollisionSpec selfCollisionSpec() {
-        return preset.selfCollision != null ? preset.selfCollision : new Preset.SelfCollisionSpec(0.5 * preset.cloth.shortestEdge(), 0.3, 0.2, false);
+        Preset.SelfCollisionSpec p = preset.selfCollision;
+        return p != null ? new Preset.SelfCollisionSpec(p.thickness, p.staticFriction, p.kineticFriction, continuousOn)
+                : new Preset.SelfCollisionSpec(0.5 * preset.cloth.shortestEdge(), 0.3, 0.2, continuousOn);
     }
 
     public boolean paused() { return paused; }
