@@ -7,10 +7,13 @@ package xpbdcloth.engine;
 final class Integrator {
     private Integrator() { }
 
-    /** Semi-implicit Euler for the free particles: v += h·(g + w·f), x_prev = x, x += h·v; pinned ones keep x. */
-    static void predict(Particles particles, SolverSettings settings, double h) {
+    /**
+     * Semi-implicit Euler for the free particles: v += h·(g + w·f), x_prev = x, x += h·v; pinned ones keep x.
+     * Gravity and h from the substep's context, where vertex block descent reads them too.
+     */
+    static void predict(Particles particles, SolverContext ctx) {
         final double[] x = particles.x, prev = particles.prev, v = particles.v, w = particles.w, f = particles.force;
-        final double gx = settings.gravityX(), gy = settings.gravityY(), gz = settings.gravityZ();
+        final double gx = ctx.gravityX, gy = ctx.gravityY, gz = ctx.gravityZ, h = ctx.h;
         for (int i = 0, n = particles.count(); i < n; i++) {
             final int k = 3 * i;
             prev[k] = x[k]; prev[k + 1] = x[k + 1]; prev[k + 2] = x[k + 2];

@@ -235,7 +235,7 @@ public final class Simulation {
         ctx.load(settings, h);
         for (int s = 0; s < substeps; s++) {
             final double t = time + h;
-            Integrator.predict(particles, settings, h);
+            Integrator.predict(particles, ctx);
             if (self != null && self.guard() != null) self.guard().begin(particles);
             particles.clearDepenetration();
             System.arraycopy(particles.x, 0, prediction, 0, prediction.length);

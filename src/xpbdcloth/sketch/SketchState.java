@@ -39,8 +39,7 @@ public final class SketchState {
     private static int threads = Math.min(2, Runtime.getRuntime().availableProcessors());
 
     public static void setThreads(int n) {
-        if (n < 1 || n > 64) throw new IllegalArgumentException("threads must be in [1, 64], was " + n);
-        threads = n;
+        threads = new SolverSettings().withThreads(n).threads(); // the engine's range check, not a copy of it
     }
     static final double MIN_COMPLIANCE = Limits.SMALLEST_NONZERO_COMPLIANCE, MAX_COMPLIANCE = Limits.COMPLIANCE.hi;
     /** The families a material key acts on: null means all three. */
