@@ -31,7 +31,8 @@ import java.util.Arrays;
  * the faster of its two), so one fast particle no longer widens every cell. The arrays grow only when
  * the cloth needs more (more pairs than ever before), so steady stepping allocates nothing.
  * Where it fails: a particle passing through the middle of a triangle between three others far apart
- * (the cloth's spacing larger than t) is not caught: this is particle–particle, not point–triangle.
+ * (the cloth's spacing larger than t) is not caught: this is particle–particle, not point–triangle; the
+ * {@link CrossingGuard}, made with the triangles, catches what passes (at a cost, docs/contacts.md).
  */
 public final class SelfCollision extends Collider implements Team.Job {
     /** Pairs closer than this many thicknesses at rest are neighbours: the cloth's own constraints keep them apart. */

@@ -52,9 +52,12 @@ final class TriangleGrid {
             if (cells > MOST_CELLS) large[largeCount++] = t;
             else entries += cells;
         }
-        final int table = Integer.highestOneBit((int) Math.max(1, Math.min(1 << 28, 2 * entries - 1))) << 1;
-        if (bucketStart.length != table + 1) bucketStart = new int[table + 1];
+        // A table of at least twice the entries, a power of two; kept when larger (so a count that crosses a
+        // power of two back and forth allocates nothing).
+        final int needed = Integer.highestOneBit((int) Math.max(1, Math.min(1 << 28, 2 * entries - 1))) << 1;
+        if (bucketStart.length < needed + 1) bucketStart = new int[needed + 1];
         else Arrays.fill(bucketStart, 0);
+        final int table = bucketStart.length - 1;
         if (listed.length < entries) listed = new int[(int) entries];
         for (int pass = 0; pass < 2; pass++) {
             for (int t = 0; t < count; t++) {
