@@ -253,17 +253,11 @@ public final class BendingPatch {
 
     /** For each edge slot 3t + e, the slot of the same edge in the first other triangle that has it, or −1. */
     private static int[] twins(int particles, int[] triangles) {
+        TriangleEdges edges = TriangleEdges.of(triangles, particles);
         int[] out = new int[triangles.length];
-        Arrays.fill(out, -1);
-        Map<Long, Integer> first = new HashMap<>();
-        long n = particles;
         for (int s = 0; s < triangles.length; s++) {
-            int t = s - s % 3, a = triangles[s], b = triangles[t + (s % 3 + 1) % 3];
-            long key = Math.min(a, b) * n + Math.max(a, b);
-            Integer f = first.putIfAbsent(key, s);
-            if (f == null) continue;
-            if (out[f] < 0) out[f] = s;
-            if (out[s] < 0) out[s] = f;
+            int e = edges.edgeOf(s), first = edges.firstSide(e);
+            out[s] = s == first ? edges.secondSide(e) : first;
         }
         return out;
     }

@@ -100,8 +100,9 @@ public final class CrossingGuard implements Team.Job {
             if (triangles[k] < 0 || triangles[k] >= particles)
                 throw new IllegalArgumentException("triangles[" + k + "] must be a particle in [0, " + particles + "), was " + triangles[k]);
         this.triangles = triangles.clone();
-        triangleEdges = new int[triangles.length];
-        edges = numberEdges(this.triangles, particles, triangleEdges);
+        final TriangleEdges numbered = TriangleEdges.of(this.triangles, particles);
+        edges = numbered.ends();
+        triangleEdges = numbered.edgeOfSides();
         final double mean = meanEdge(edges, rest);
         grid = new TriangleGrid(CELL_EDGES * mean);
         gap = GAP_EDGES * mean;
@@ -115,9 +116,6 @@ public final class CrossingGuard implements Team.Job {
         edgeMove = new double[edges.length / 2];
         triangleMove = new double[this.triangles.length / 3];
     }
-
-    /** The particle count it was made for. */
-    public int particleCount() { return particles; }
 
     /** Events found and cut back since it was made (one per vertex–face or edge–edge contact per pass). */
     public long events() { return events; }
@@ -150,6 +148,7 @@ public final class CrossingGuard implements Team.Job {
         Arrays.fill(fraction, 1);
         passX = x;
         passW = w;
+        startSpheres(start);
         int found = 0;
         for (int pass = 0; pass < MAX_PASSES; pass++) {
             passes++;
@@ -213,7 +212,7 @@ public final class CrossingGuard implements Team.Job {
                 TriangleGeometry.coplanarCubic(start, x, a, b, d, start[k], start[k + 1], start[k + 2], x[k], x[k + 1], x[k + 2], scratch);
                 final double noise = roundOff(start, a, b, d, i);
                 if (oneSigned(scratch, noise)) continue;
-                double tau = firstFaceContact(i, a, b, d, start, x, noise, scratch);
+                double tau = TriangleGeometry.firstRootInside(start[k], start[k + 1], start[k + 2], x[k], x[k + 1], x[k + 2], start, x, a, b, d, SLACK, 0, noise, scratch);
                 if (tau < 0) continue;
                 found++;
                 sh.stop(i, a, b, d, putBack ? 0 : keep(tau, apart2));
@@ -276,24 +275,6 @@ public final class CrossingGuard implements Team.Job {
         final double hz = Math.max(Math.max(start[a + 2], x[a + 2]), Math.max(start[b + 2], x[b + 2])) + PAD;
         sh.lx = lx; sh.ly = ly; sh.lz = lz; sh.hx = hx; sh.hy = hy; sh.hz = hz;
         return grid.query(sh.query, lx, ly, lz, hx, hy, hz);
-    }
-
-    /**
-     * The first root τ ∈ (0, 1] of the cubic in scratch at which vertex i is inside face (a, b, c), or 1 if
-     * the cubic ends within round-off of 0 with the vertex inside (it ends in the face: touching, which the
-     * next substep would turn into a crossing); −1 if none.
-     */
-    private static double firstFaceContact(int i, int a, int b, int c, double[] start, double[] x, double noise, double[] scratch) {
-        final double end = scratch[0] + scratch[1] + scratch[2] + scratch[3];
-        final int roots = TriangleGeometry.coplanarRoots(scratch), k = 3 * i;
-        final double t0 = scratch[4], t1 = scratch[5], t2 = scratch[6]; // insideAt writes over the scratch
-        for (int r = 0; r < roots + 1; r++) {
-            if (r == roots && !(Math.abs(end) <= noise)) break;
-            final double t = r == roots ? 1 : r == 0 ? t0 : r == 1 ? t1 : t2;
-            if (t > 0 && TriangleGeometry.insideAt(t, start[k], start[k + 1], start[k + 2], x[k], x[k + 1], x[k + 2], start, x, a, b, c, SLACK, scratch))
-                return t;
-        }
-        return -1;
     }
 
     /** The first root τ ∈ (0, 1] of the cubic in scratch at which edges (p, q) and (r, s) meet, or 1 if it ends within round-off of 0 with them meeting; −1 if none. */
@@ -377,12 +358,8 @@ public final class CrossingGuard implements Team.Job {
         return (b0 > noise && b1 > noise && b2 > noise && b3 > noise) || (b0 < -noise && b1 < -noise && b2 < -noise && b3 < -noise);
     }
 
-    /** Each particle's move and each triangle's box over the substep's motion (start → x), padded. */
-    private void sweptBoxes(double[] start, double[] x) {
-        for (int i = 0; i < particles; i++) {
-            final int k = 3 * i;
-            moved[i] = Math.sqrt(squared(x[k] - start[k], x[k + 1] - start[k + 1], x[k + 2] - start[k + 2]));
-        }
+    /** Each edge's and each triangle's bounding sphere at the substep's start (fixed for all its passes). */
+    private void startSpheres(double[] start) {
         final int edgeCount = edges.length / 2;
         for (int e = 0; e < edgeCount; e++) {
             final int p = 3 * edges[2 * e], q = 3 * edges[2 * e + 1], o = 4 * e;
@@ -390,15 +367,26 @@ public final class CrossingGuard implements Team.Job {
             sphere[o + 1] = 0.5 * (start[p + 1] + start[q + 1]);
             sphere[o + 2] = 0.5 * (start[p + 2] + start[q + 2]);
             sphere[o + 3] = 0.5 * Math.sqrt(squared(start[q] - start[p], start[q + 1] - start[p + 1], start[q + 2] - start[p + 2]));
-            edgeMove[e] = Math.max(moved[edges[2 * e]], moved[edges[2 * e + 1]]);
         }
         for (int t = 0, count = triangles.length / 3; t < count; t++) {
             // Centred on the centroid, out to the farthest corner.
-            final int a = 3 * triangles[3 * t], b3 = 3 * triangles[3 * t + 1], c = 3 * triangles[3 * t + 2], o = 4 * (edgeCount + t);
-            final double mx = (start[a] + start[b3] + start[c]) / 3, my = (start[a + 1] + start[b3 + 1] + start[c + 1]) / 3, mz = (start[a + 2] + start[b3 + 2] + start[c + 2]) / 3;
+            final int a = 3 * triangles[3 * t], b = 3 * triangles[3 * t + 1], c = 3 * triangles[3 * t + 2], o = 4 * (edgeCount + t);
+            final double mx = (start[a] + start[b] + start[c]) / 3, my = (start[a + 1] + start[b + 1] + start[c + 1]) / 3, mz = (start[a + 2] + start[b + 2] + start[c + 2]) / 3;
             sphere[o] = mx; sphere[o + 1] = my; sphere[o + 2] = mz;
             sphere[o + 3] = Math.sqrt(Math.max(squared(start[a] - mx, start[a + 1] - my, start[a + 2] - mz),
-                    Math.max(squared(start[b3] - mx, start[b3 + 1] - my, start[b3 + 2] - mz), squared(start[c] - mx, start[c + 1] - my, start[c + 2] - mz))));
+                    Math.max(squared(start[b] - mx, start[b + 1] - my, start[b + 2] - mz), squared(start[c] - mx, start[c + 1] - my, start[c + 2] - mz))));
+        }
+    }
+
+    /** Each particle's move and each triangle's box over the substep's motion (start → x), padded. */
+    private void sweptBoxes(double[] start, double[] x) {
+        for (int i = 0; i < particles; i++) {
+            final int k = 3 * i;
+            moved[i] = Math.sqrt(squared(x[k] - start[k], x[k + 1] - start[k + 1], x[k + 2] - start[k + 2]));
+        }
+        final int edgeCount = edges.length / 2;
+        for (int e = 0; e < edgeCount; e++) edgeMove[e] = Math.max(moved[edges[2 * e]], moved[edges[2 * e + 1]]);
+        for (int t = 0, count = triangles.length / 3; t < count; t++) {
             triangleMove[t] = Math.max(moved[triangles[3 * t]], Math.max(moved[triangles[3 * t + 1]], moved[triangles[3 * t + 2]]));
             final int b = 6 * t;
             for (int d = 0; d < 3; d++) {
@@ -460,24 +448,5 @@ public final class CrossingGuard implements Team.Job {
         for (int e = 0; e < edges.length; e += 2)
             sum += Math.sqrt(squared(rest[3 * edges[e]] - rest[3 * edges[e + 1]], rest[3 * edges[e] + 1] - rest[3 * edges[e + 1] + 1], rest[3 * edges[e] + 2] - rest[3 * edges[e + 1] + 2]));
         return edges.length == 0 || !(sum > 0) ? 1 : sum / (edges.length / 2);
-    }
-
-    /** Numbers the edges of the triangles (sides ab, bc, ca into triangleEdges); returns their two vertices each, lower first. */
-    private static int[] numberEdges(int[] triangles, int vertexCount, int[] triangleEdges) {
-        java.util.HashMap<Long, Integer> index = new java.util.HashMap<>();
-        int[] ends = new int[2 * triangles.length];
-        for (int k = 0; k < triangles.length; k++) {
-            int a = triangles[k], b = triangles[k % 3 == 2 ? k - 2 : k + 1];
-            long key = (long) Math.min(a, b) * vertexCount + Math.max(a, b);
-            Integer e = index.get(key);
-            if (e == null) {
-                e = index.size();
-                index.put(key, e);
-                ends[2 * e] = Math.min(a, b);
-                ends[2 * e + 1] = Math.max(a, b);
-            }
-            triangleEdges[k] = e;
-        }
-        return Arrays.copyOf(ends, 2 * index.size());
     }
 }

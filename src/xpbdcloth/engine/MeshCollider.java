@@ -113,16 +113,16 @@ public final class MeshCollider extends RigidCollider {
         // Whether every edge has exactly two triangles (closed: it has an inside); a closed mesh wound inwards
         // is turned so that every normal points out.
         this.triangles = triangles.clone();
-        edgeOf = new int[3 * triangleCount];
-        int[] uses = edges(this.triangles, vertexCount, edgeOf);
+        TriangleEdges numbered = TriangleEdges.of(this.triangles, vertexCount);
         boolean everyEdgeTwice = true;
-        for (int u : uses) everyEdgeTwice &= u == 2;
+        for (int e = 0; e < numbered.count(); e++) everyEdgeTwice &= numbered.uses(e) == 2;
         closed = everyEdgeTwice;
-        edgeCount = uses.length;
+        edgeCount = numbered.count();
         if (closed && signedVolume(this.triangles, localRest) < 0) {
             for (int t = 0; t < triangleCount; t++) { int s = this.triangles[3 * t + 1]; this.triangles[3 * t + 1] = this.triangles[3 * t + 2]; this.triangles[3 * t + 2] = s; }
-            edges(this.triangles, vertexCount, edgeOf);
+            numbered = TriangleEdges.of(this.triangles, vertexCount);
         }
+        edgeOf = numbered.edgeOfSides();
         double radius = 0;
         for (double[] f : this.frames == null ? new double[][] {localRest} : this.frames)
             for (int v = 0; v < vertexCount; v++) radius = Math.max(radius, Math.sqrt(f[3 * v] * f[3 * v] + f[3 * v + 1] * f[3 * v + 1] + f[3 * v + 2] * f[3 * v + 2]));
@@ -147,24 +147,6 @@ public final class MeshCollider extends RigidCollider {
                 throw new IllegalArgumentException(what + " coordinate " + i + " must be finite and within ±" + EngineRange.MAX_POSITION + " m, was " + world[i]);
             out[i] = world[i] - origin[i % 3];
         }
-        return out;
-    }
-
-    /** Numbers the mesh's edges into edgeOf (sides ab, bc, ca of each triangle); returns how many triangles use each edge. */
-    private static int[] edges(int[] triangles, int vertexCount, int[] edgeOf) {
-        java.util.HashMap<Long, Integer> index = new java.util.HashMap<>();
-        java.util.ArrayList<Integer> uses = new java.util.ArrayList<>();
-        for (int t = 0; t < triangles.length / 3; t++)
-            for (int e = 0; e < 3; e++) {
-                int a = triangles[3 * t + e], b = triangles[3 * t + (e + 1) % 3];
-                long key = (long) Math.min(a, b) * vertexCount + Math.max(a, b);
-                Integer k = index.get(key);
-                if (k == null) { k = index.size(); index.put(key, k); uses.add(0); }
-                uses.set(k, uses.get(k) + 1);
-                edgeOf[3 * t + e] = k;
-            }
-        int[] out = new int[uses.size()];
-        for (int k = 0; k < out.length; k++) out[k] = uses.get(k);
         return out;
     }
 

@@ -204,9 +204,9 @@ public final class SelfCollision extends Collider implements Team.Job {
             // partner as fast as itself could need, base + 2 mᵢ, over the cells that span on each axis (two or
             // three at rest, where a span rounded up about i's own cell would make it five, 125 cells in all).
             final double reach = base + 2 * mi;
-            final int x0 = cellIndex(xi - reach, cell), x1 = cellIndex(xi + reach, cell);
-            final int y0 = cellIndex(yi - reach, cell), y1 = cellIndex(yi + reach, cell);
-            final int z0 = cellIndex(zi - reach, cell), z1 = cellIndex(zi + reach, cell);
+            final int x0 = HashedCells.index(xi - reach, cell), x1 = HashedCells.index(xi + reach, cell);
+            final int y0 = HashedCells.index(yi - reach, cell), y1 = HashedCells.index(yi + reach, cell);
+            final int z0 = HashedCells.index(zi - reach, cell), z1 = HashedCells.index(zi + reach, cell);
             if (((double) x1 - x0 + 1) * ((double) y1 - y0 + 1) * ((double) z1 - z0 + 1) > n) {
                 // A particle moving many cells in a substep (a fast one on a fine cloth) would search more
                 // cells than there are particles: look at every particle instead (the fuzzer found a 4 × 2
@@ -218,7 +218,7 @@ public final class SelfCollision extends Collider implements Team.Job {
             for (long cx = x0; cx <= x1; cx++)
                 for (long cy = y0; cy <= y1; cy++)
                     for (long cz = z0; cz <= z1; cz++) {
-                        final int bucket = hash((int) cx, (int) cy, (int) cz, table);
+                        final int bucket = HashedCells.bucket((int) cx, (int) cy, (int) cz, table);
                         // Two of the cells searched can share a bucket: visit it once, or its pairs would be found twice.
                         if (visitedBy[bucket] == i + 1) continue;
                         visitedBy[bucket] = i + 1;
@@ -262,13 +262,6 @@ public final class SelfCollision extends Collider implements Team.Job {
         pairs++;
     }
 
-    private static int cellIndex(double v, double cell) { return (int) Math.floor(v / cell); }
-
-    private static int hash(int x, int y, int z, int table) {
-        int h = (x * 92837111) ^ (y * 689287499) ^ (z * 283923481);
-        return h & (table - 1); // table is a power of two: a mask, not a division (27 of these a particle)
-    }
-
     /** Counting sort of the particles by hashed cell. */
     private void buildHash(double[] x, int n, double cell) {
         int table = Integer.highestOneBit(Math.max(1, 2 * n - 1)) << 1; // the power of two at or above 2n
@@ -276,7 +269,7 @@ public final class SelfCollision extends Collider implements Team.Job {
         Arrays.fill(cellStart, 0);
         for (int i = 0; i < n; i++) {
             int k = 3 * i;
-            cellOf[i] = hash(cellIndex(x[k], cell), cellIndex(x[k + 1], cell), cellIndex(x[k + 2], cell), table);
+            cellOf[i] = HashedCells.bucket(HashedCells.index(x[k], cell), HashedCells.index(x[k + 1], cell), HashedCells.index(x[k + 2], cell), table);
             cellStart[cellOf[i]]++;
         }
         // Running ends, then each particle placed from its cell's end down: cellStart[c] becomes its start.

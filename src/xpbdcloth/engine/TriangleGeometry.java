@@ -66,13 +66,26 @@ final class TriangleGeometry {
     static double firstCoplanarTime(double p0x, double p0y, double p0z, double p1x, double p1y, double p1z,
                                     double[] v0, double[] v1, int a, int b, int c, double slack, double[] scratch) {
         coplanarCubic(v0, v1, a, b, c, p0x, p0y, p0z, p1x, p1y, p1z, scratch);
-        int roots = coplanarRoots(scratch);
-        double t0 = scratch[4], t1 = scratch[5], t2 = scratch[6]; // insideAt writes over the scratch
+        return firstRootInside(p0x, p0y, p0z, p1x, p1y, p1z, v0, v1, a, b, c, slack, -1, -1, scratch);
+    }
+
+    /**
+     * With {@link #coplanarCubic} in k[0..3]: its first root τ &gt; {@code after} at which the point is inside
+     * the triangle (weights ≥ −slack); else 1 if the cubic ends within {@code endNoise} of 0 with the point
+     * inside then (touching at the end, which round-off can hide from the roots); −1 if neither. A mesh body
+     * takes every root in [0, 1] and no end touch (after = endNoise = −1); the cloth's guard takes τ &gt; 0
+     * (a root at the start is a touch, not a crossing) and its round-off bound.
+     */
+    static double firstRootInside(double p0x, double p0y, double p0z, double p1x, double p1y, double p1z,
+                                  double[] v0, double[] v1, int a, int b, int c, double slack, double after, double endNoise, double[] k) {
+        final double end = k[0] + k[1] + k[2] + k[3];
+        final int roots = coplanarRoots(k);
+        final double t0 = k[4], t1 = k[5], t2 = k[6]; // insideAt writes over the scratch
         for (int r = 0; r < roots; r++) {
-            double t = r == 0 ? t0 : r == 1 ? t1 : t2;
-            if (insideAt(t, p0x, p0y, p0z, p1x, p1y, p1z, v0, v1, a, b, c, slack, scratch)) return t;
+            final double t = r == 0 ? t0 : r == 1 ? t1 : t2;
+            if (t > after && insideAt(t, p0x, p0y, p0z, p1x, p1y, p1z, v0, v1, a, b, c, slack, k)) return t;
         }
-        return -1;
+        return Math.abs(end) <= endNoise && insideAt(1, p0x, p0y, p0z, p1x, p1y, p1z, v0, v1, a, b, c, slack, k) ? 1 : -1;
     }
 
     /**

@@ -16,6 +16,8 @@ final class TriangleGrid {
 
     private final double cell;
     private int[] bucketStart = new int[1], listed = new int[0], large = new int[0];
+    /** Whether each triangle is listed in its cells (else in the large list). */
+    private boolean[] inCells = new boolean[0];
     private int largeCount, count;
 
     /** One thread's queries: which triangles the current one has found (each once) and the list of them. */
@@ -44,13 +46,14 @@ final class TriangleGrid {
     /** Lists triangles 0 .. count − 1 by their boxes (6 numbers each: min xyz, max xyz). */
     void build(double[] boxes, int count) {
         this.count = count;
-        if (large.length < count) large = new int[count];
+        if (large.length < count) { large = new int[count]; inCells = new boolean[count]; }
         long entries = 0;
         largeCount = 0;
         for (int t = 0; t < count; t++) {
             long cells = cellsOf(boxes, t);
-            if (cells > MOST_CELLS) large[largeCount++] = t;
-            else entries += cells;
+            inCells[t] = cells <= MOST_CELLS;
+            if (inCells[t]) entries += cells;
+            else large[largeCount++] = t;
         }
         // A table of at least twice the entries, a power of two; kept when larger (so a count that crosses a
         // power of two back and forth allocates nothing).
@@ -62,13 +65,13 @@ final class TriangleGrid {
         for (int pass = 0; pass < 2; pass++) {
             for (int t = 0; t < count; t++) {
                 final int b = 6 * t;
-                if (cellsOf(boxes, t) > MOST_CELLS) continue;
+                if (!inCells[t]) continue;
                 final int x0 = index(boxes[b]), x1 = index(boxes[b + 3]), y0 = index(boxes[b + 1]), y1 = index(boxes[b + 4]);
                 final int z0 = index(boxes[b + 2]), z1 = index(boxes[b + 5]);
                 for (long cx = x0; cx <= x1; cx++) // long: an index saturated at Integer.MAX_VALUE still ends the loop
                     for (long cy = y0; cy <= y1; cy++)
                         for (long cz = z0; cz <= z1; cz++) {
-                            final int h = hash((int) cx, (int) cy, (int) cz, table);
+                            final int h = HashedCells.bucket((int) cx, (int) cy, (int) cz, table);
                             if (pass == 0) bucketStart[h]++;
                             else listed[--bucketStart[h]] = t;
                         }
@@ -97,7 +100,7 @@ final class TriangleGrid {
         for (long cx = x0; cx <= x1; cx++)
             for (long cy = y0; cy <= y1; cy++)
                 for (long cz = z0; cz <= z1; cz++) {
-                    final int h = hash((int) cx, (int) cy, (int) cz, table);
+                    final int h = HashedCells.bucket((int) cx, (int) cy, (int) cz, table);
                     for (int s = bucketStart[h], e = bucketStart[h + 1]; s < e; s++) count = q.add(listed[s], count);
                 }
         return count;
@@ -109,9 +112,5 @@ final class TriangleGrid {
                 * ((long) index(boxes[b + 5]) - index(boxes[b + 2]) + 1);
     }
 
-    private int index(double v) { return (int) Math.floor(v / cell); }
-
-    private static int hash(int x, int y, int z, int table) {
-        return ((x * 92837111) ^ (y * 689287499) ^ (z * 283923481)) & (table - 1);
-    }
+    private int index(double v) { return HashedCells.index(v, cell); }
 }

@@ -2,9 +2,7 @@ package xpbdcloth.fabric;
 
 import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.PriorityQueue;
 import xpbdcloth.engine.BendingPatch;
 import xpbdcloth.engine.ConstraintBlock;
@@ -15,6 +13,7 @@ import xpbdcloth.engine.OrthotropicMaterial;
 import xpbdcloth.engine.QuadraticBendBlock;
 import xpbdcloth.engine.Particles;
 import xpbdcloth.engine.TetherBlock;
+import xpbdcloth.engine.TriangleEdges;
 
 /**
  * A cloth as a material rather than as springs: from a triangle mesh at rest, the membrane of every
@@ -114,20 +113,17 @@ public final class FabricConstraints {
     static List<ConstraintBlock> hinges(Particles p, int[] triangles, double bendingStiffness) {
         QuadraticBendBlock flat = new QuadraticBendBlock(ConstraintFamily.DIHEDRAL, triangles.length / 2);
         DihedralBlock bent = new DihedralBlock(ConstraintFamily.DIHEDRAL, 16);
-        Map<Long, Integer> firstOpposite = new HashMap<>();
-        long n = p.count();
-        for (int t = 0; t < triangles.length; t += 3)
-            for (int e = 0; e < 3; e++) {
-                int a = triangles[t + e], b = triangles[t + (e + 1) % 3], opposite = triangles[t + (e + 2) % 3];
-                long key = Math.min(a, b) * n + Math.max(a, b);
-                Integer other = firstOpposite.putIfAbsent(key, opposite);
-                // The edge as the first triangle walked it (a→b): the order fixes the angle's sign convention.
-                if (other != null && other >= 0) {
-                    if (QuadraticBendBlock.isFlat(p, other, opposite, b, a, FLAT)) flat.addAtCurrentShape(p, other, opposite, b, a, bendingStiffness);
-                    else bent.addAtCurrentShape(p, other, opposite, b, a, bendingStiffness);
-                    firstOpposite.put(key, -1);
-                }
-            }
+        TriangleEdges edges = TriangleEdges.of(triangles, p.count());
+        // A hinge where the second triangle walks its edge, in the order the triangles come.
+        for (int s = 0; s < triangles.length; s++) {
+            int edge = edges.edgeOf(s);
+            if (edges.secondSide(edge) != s) continue;
+            int first = edges.firstSide(edge), t = s - s % 3, a = triangles[s], b = triangles[t + (s % 3 + 1) % 3], opposite = triangles[t + (s % 3 + 2) % 3];
+            int other = triangles[first - first % 3 + (first % 3 + 2) % 3];
+            // The edge as the first triangle walked it (b→a, the second walking it a→b): the order fixes the angle's sign convention.
+            if (QuadraticBendBlock.isFlat(p, other, opposite, b, a, FLAT)) flat.addAtCurrentShape(p, other, opposite, b, a, bendingStiffness);
+            else bent.addAtCurrentShape(p, other, opposite, b, a, bendingStiffness);
+        }
         List<ConstraintBlock> out = new ArrayList<>();
         if (flat.count() > 0) out.add(flat);
         if (bent.count() > 0) out.add(bent);

@@ -41,12 +41,7 @@ class CrossingGuardTest {
     /** B is a small triangle above A's middle: its vertices would pass through A's face (vertex–face). */
     @Test
     void aTriangleThrownAtAnotherFaceOnStopsAboveIt() {
-        double[] a = {-1, -1, 0, 1, -1, 0, 0, 1, 0};
-        double[] b = {-0.1, -0.1, 0.05, 0.1, -0.1, 0.05, 0, 0.1, 0.05};
-        double[] off = throwB(a, b, false), on = throwB(a, b, true);
-        assertTrue(off[0] < -1, "without the guard B flies through A at 10 m/s (0.2 m a step): z " + off[0]);
-        assertTrue(on[0] > 0, "with it B stays on its side of A: z " + on[0]);
-        assertEquals(0, on[1], "no crossing pair in any step");
+        assertStopsAbove(new double[] {-0.1, -0.1, 0.05, 0.1, -0.1, 0.05, 0, 0.1, 0.05});
     }
 
     /**
@@ -55,11 +50,15 @@ class CrossingGuardTest {
      */
     @Test
     void anEdgeSweptAcrossAnotherEdgeStopsAtIt() {
+        assertStopsAbove(new double[] {-2, -0.5, 0.05, 2, -0.5, 0.05, 2, -0.6, 0.05});
+    }
+
+    /** B thrown at the fixed A = (−1, −1, 0), (1, −1, 0), (0, 1, 0) flies through without the guard and stays above A with it, no pair crossing. */
+    static void assertStopsAbove(double[] b) {
         double[] a = {-1, -1, 0, 1, -1, 0, 0, 1, 0};
-        double[] b = {-2, -0.5, 0.05, 2, -0.5, 0.05, 2, -0.6, 0.05};
         double[] off = throwB(a, b, false), on = throwB(a, b, true);
-        assertTrue(off[0] < -1, "without the guard the sliver passes: its long edge at z " + off[0]);
-        assertTrue(on[0] > 0, "with it the long edge stays above A: z " + on[0]);
+        assertTrue(off[0] < -1, "without the guard B passes through A at 10 m/s (0.2 m a step): its first edge at z " + off[0]);
+        assertTrue(on[0] > 0, "with it B stays on its side of A: z " + on[0]);
         assertEquals(0, on[1], "no crossing pair in any step");
     }
 
@@ -78,22 +77,32 @@ class CrossingGuardTest {
     }
 
     static int mostCrossings(boolean guarded) {
-        int n = 24;
-        Cloth c = new ClothBuilder().resolution(n, n).size(1, 1).origin(0, 1.02, 0).arealDensity(0.2)
-                .family(ConstraintFamily.STRUCTURAL, 1, 1e-6).family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2).build();
-        Simulation sim = c.simulation(new SolverSettings().withIterations(2).withSubsteps(5));
-        sim.add(Plane.floor(0, 0.005, 0.6, 0.45));
-        Particles p = c.particles();
-        double spacing = 1.0 / (n - 1);
-        sim.selfCollision(new SelfCollision(p.positions().clone(), guarded ? c.triangles() : null, 0.1 * spacing, 0.3, 0.2));
-        for (int i = 0; i < p.count(); i++) p.setVelocity(i, 0, 0, 0.6 * Math.sin(5 * p.y(i)));
+        Cloth c = collapsingCloth();
+        Simulation sim = collapse(c, 1, guarded);
         int most = 0;
         for (int step = 0; step < 75; step++) {
             sim.step();
-            most = Math.max(most, TriangleIntersections.count(p.positions(), c.triangles()));
+            most = Math.max(most, TriangleIntersections.count(c.particles().positions(), c.triangles()));
         }
         if (guarded) assertEquals(0, sim.selfCollision().guard().unresolved(), "every event resolved within the passes");
         return most;
+    }
+
+    static final int N = 24;
+
+    static Cloth collapsingCloth() {
+        return new ClothBuilder().resolution(N, N).size(1, 1).origin(0, 1.02, 0).arealDensity(0.2)
+                .family(ConstraintFamily.STRUCTURAL, 1, 1e-6).family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2).build();
+    }
+
+    /** Cloth c on a floor with a thickness a tenth of its spacing, its rows pushed along z by 0.6 sin(5y) m/s, so it collapses in layers. */
+    static Simulation collapse(Cloth c, int threads, boolean guarded) {
+        Simulation sim = c.simulation(new SolverSettings().withIterations(2).withSubsteps(5).withThreads(threads));
+        sim.add(Plane.floor(0, 0.005, 0.6, 0.45));
+        Particles p = c.particles();
+        sim.selfCollision(new SelfCollision(p.positions().clone(), guarded ? c.triangles() : null, 0.1 / (N - 1), 0.3, 0.2));
+        for (int i = 0; i < p.count(); i++) p.setVelocity(i, 0, 0, 0.6 * Math.sin(5 * p.y(i)));
+        return sim;
     }
 
     /**
@@ -105,14 +114,7 @@ class CrossingGuardTest {
     void aGuardedClothStepsWithoutAllocating() {
         com.sun.management.ThreadMXBean bean = (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
         for (int threads = 1; threads <= 2; threads++) {
-            int n = 24;
-            Cloth c = new ClothBuilder().resolution(n, n).size(1, 1).origin(0, 1.02, 0).arealDensity(0.2)
-                    .family(ConstraintFamily.STRUCTURAL, 1, 1e-6).family(ConstraintFamily.SHEAR, 0.5, 1e-3).build();
-            Simulation sim = c.simulation(new SolverSettings().withIterations(2).withSubsteps(5).withThreads(threads));
-            sim.add(Plane.floor(0, 0.005, 0.6, 0.45));
-            Particles p = c.particles();
-            sim.selfCollision(new SelfCollision(p.positions().clone(), c.triangles(), 0.1 / (n - 1), 0.3, 0.2));
-            for (int i = 0; i < p.count(); i++) p.setVelocity(i, 0, 0, 0.6 * Math.sin(5 * p.y(i)));
+            Simulation sim = collapse(collapsingCloth(), threads, true);
             for (int step = 0; step < 40; step++) sim.step();
             double perStep = Double.MAX_VALUE;
             for (int window = 0; window < 2; window++) {
