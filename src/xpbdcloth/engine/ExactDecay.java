@@ -27,12 +27,23 @@ final class ExactDecay {
         pending[i3] += fx; pending[i3 + 1] += fy; pending[i3 + 2] += fz;
     }
 
-    /** Hands every particle its gathered force, scaled by the exact decay over dt. */
+    /**
+     * Hands every free particle its gathered force, scaled by the exact decay over dt. Pinned particles get
+     * none (their script moves them; a force would do nothing). Added past {@link Particles#addForce}'s range,
+     * which bounds what a caller may push: the decay already bounds what this force does, w·scale·|F|·dt ≤ the
+     * flow's speed past the particle, while the force itself on a heavy particle in a dense, fast flow can
+     * rightly exceed any such range (the fuzzer found a 500 m flag in 140 m/s air at 1e9 N).
+     */
     void apply(Particles p, double dt) {
+        final double[] force = p.force, w = p.w;
         for (int i = 0, n = rate.length; i < n; i++) {
-            double xi = dt * p.w[i] * rate[i];
+            if (w[i] == 0) continue;
+            double xi = dt * w[i] * rate[i];
             double scale = xi < 1e-6 ? 1 - 0.5 * xi : -Math.expm1(-xi) / xi;
-            p.addForce(i, scale * pending[3 * i], scale * pending[3 * i + 1], scale * pending[3 * i + 2]);
+            final int k = 3 * i;
+            force[k] += scale * pending[k];
+            force[k + 1] += scale * pending[k + 1];
+            force[k + 2] += scale * pending[k + 2];
         }
     }
 
