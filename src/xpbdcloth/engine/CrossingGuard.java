@@ -32,13 +32,17 @@ import java.util.Arrays;
  * plane); four points within round-off of one plane all substep (layers pressed flat on the floor) are
  * judged in that plane, edges that meet at the end and did not at the start being put back.
  *
- * <p>Candidates: a {@link TriangleGrid} of the triangles' swept boxes, rebuilt every pass; each vertex and
- * each edge asks it for the triangles its own swept box overlaps, and bounding spheres, the distance at the
- * start against the most the features can move, and the cubic's Bernstein coefficients clear most before
- * any root is sought. Edge pairs are tested once (the lower-numbered edge asks). On the solver's team each
- * thread sweeps its share of vertices and edges into cuts of its own, and the smallest is taken: the same
- * bits on any thread count. Nothing is allocated in a substep except when a query finds more candidates
- * than ever before.
+ * <p>Candidates: each vertex with the faces, and each edge with the edges, whose boxes could overlap over
+ * the substep, listed from a {@link TriangleGrid} of the triangles' reaches (each particle's motion grown by
+ * a skin of {@link #SKIN_EDGES} mean edges) and kept across substeps while every particle stays within its
+ * reach (a Verlet list, as the particle pairs keep theirs): searching a grid rebuilt every pass was most of
+ * the guard's time, and a cloth that folds slowly keeps its lists for several substeps. The skin sets only
+ * how often the lists are made and how long they are, never what is found. Each pass clears the listed pairs by their
+ * swept boxes, bounding spheres, the distance at the start against the most the features can move, and the
+ * cubic's Bernstein coefficients, before any root is sought. Edge pairs are listed once (the lower-numbered
+ * edge holds them). On the solver's team each thread lists and sweeps its share of vertices and edges into
+ * cuts of its own, and the smallest is taken: the same bits on any thread count. Nothing is allocated in a
+ * substep except when a list is longer than ever before.
  * Where it fails: a root at τ = 0 (a vertex exactly in a face's plane and inside it at the substep's start)
  * is taken as a touch, not a crossing; pinned particles pushed through the cloth by their script cannot be
  * stopped (counted in {@link #unresolved()}); a cloth that is already crossed stays so (it keeps a clean
@@ -61,14 +65,27 @@ public final class CrossingGuard implements Team.Job {
     static final double GAP_EDGES = 1e-3;
     /** The grid's cells, in mean rest edges. */
     static final double CELL_EDGES = 1;
+    /** How far, in mean rest edges, a particle may move beyond its motion when the candidates were listed before they are listed again. */
+    static final double SKIN_EDGES = 0.25;
 
     private final int particles;
     private final int[] triangles;
     /** Each edge's two vertices, and each triangle's three edges (sides ab, bc, ca). */
     private final int[] edges, triangleEdges;
     private final TriangleGrid grid;
-    /** The closest an event's features are let come, m. */
-    private final double gap;
+    /** The closest an event's features are let come, m; the skin the candidate lists are made with, m. */
+    private final double gap, meanEdge;
+    private double skin;
+    /**
+     * Each particle's reach when the candidates were listed (its motion then, grown by the skin: min xyz, max
+     * xyz) and each triangle's, the box of its corners' reaches. While every particle's start and end stay
+     * inside its reach, any two features whose swept boxes overlap had overlapping reaches, so they are in the
+     * lists: the lists are made again only when a particle leaves its reach (or the thread count changes).
+     */
+    private final double[] particleReach, triangleReach;
+    private boolean listed;
+    /** Whether this pass lists the candidates again. */
+    private boolean passLists;
     private final double[] start, end, fraction;
     /** Each thread's pass: its cuts, scratch, queries and events. */
     private Share[] shares;
@@ -106,6 +123,10 @@ public final class CrossingGuard implements Team.Job {
         final double mean = meanEdge(edges, rest);
         grid = new TriangleGrid(CELL_EDGES * mean);
         gap = GAP_EDGES * mean;
+        meanEdge = mean;
+        skin = SKIN_EDGES * mean;
+        particleReach = new double[6 * particles];
+        triangleReach = new double[2 * this.triangles.length];
         start = new double[3 * particles];
         end = new double[3 * particles];
         fraction = new double[particles];
@@ -115,6 +136,12 @@ public final class CrossingGuard implements Team.Job {
         sphere = new double[4 * (edges.length / 2 + this.triangles.length / 3)];
         edgeMove = new double[edges.length / 2];
         triangleMove = new double[this.triangles.length / 3];
+    }
+
+    /** Sets the skin, in mean rest edges (≥ 0), from the next listing on: what is found does not depend on it, only the cost. */
+    void skinEdges(double edges) {
+        skin = Check.inRange("skinEdges", edges, 0, 100) * meanEdge;
+        listed = false;
     }
 
     /** Events found and cut back since it was made (one per vertex–face or edge–edge contact per pass). */
@@ -143,7 +170,9 @@ public final class CrossingGuard implements Team.Job {
         if (shares.length != threads) {
             shares = new Share[threads];
             for (int t = 0; t < threads; t++) shares[t] = new Share();
+            listed = false;
         }
+        if (!listed || !withinReach(start, x)) relist(start, x);
         System.arraycopy(x, 0, end, 0, 3 * n);
         Arrays.fill(fraction, 1);
         passX = x;
@@ -153,10 +182,10 @@ public final class CrossingGuard implements Team.Job {
         for (int pass = 0; pass < MAX_PASSES; pass++) {
             passes++;
             sweptBoxes(start, x);
-            grid.build(triangleBox, triangles.length / 3);
             passPutsBack = pass >= CUT_PASSES;
             if (threads == 1) sweep(shares[0], 0, 1);
             else team.run(this);
+            passLists = false;
             found = 0;
             for (Share sh : shares) found += sh.found;
             if (found == 0) return;
@@ -193,88 +222,136 @@ public final class CrossingGuard implements Team.Job {
         final int edgeCount = edges.length / 2;
         final double[] sphere = this.sphere;
         int found = 0;
-        for (int i = (int) ((long) particles * id / count), last = (int) ((long) particles * (id + 1) / count); i < last; i++) {
-            final int k = 3 * i;
-            final int m = query(sh, start, x, i, i);
-            final int[] candidates = sh.query.found();
-            for (int c = 0; c < m; c++) {
-                final int t = candidates[c], a = triangles[3 * t], b = triangles[3 * t + 1], d = triangles[3 * t + 2];
-                if (i == a || i == b || i == d || w[i] + w[a] + w[b] + w[d] == 0 || !sh.overlaps(triangleBox, t)) continue;
-                final int o = 4 * (edgeCount + t);
-                final double cx = start[k] - sphere[o], cy = start[k + 1] - sphere[o + 1], cz = start[k + 2] - sphere[o + 2];
-                final double bound = sphere[o + 3] + moved[i] + triangleMove[t] + PAD;
-                if (cx * cx + cy * cy + cz * cz > bound * bound) continue;
-                // Apart by more than they move (any point of the face moves at most as far as its fastest corner): no contact.
-                TriangleGeometry.closestPoint(start[k], start[k + 1], start[k + 2], start, a, b, d, closest);
-                final double gx = closest[0] - start[k], gy = closest[1] - start[k + 1], gz = closest[2] - start[k + 2];
-                final double reach = moved[i] + triangleMove[t] + PAD, apart2 = gx * gx + gy * gy + gz * gz;
-                if (apart2 > reach * reach) continue;
-                TriangleGeometry.coplanarCubic(start, x, a, b, d, start[k], start[k + 1], start[k + 2], x[k], x[k + 1], x[k + 2], scratch);
-                final double noise = roundOff(start, a, b, d, i);
-                if (oneSigned(scratch, noise)) continue;
-                double tau = TriangleGeometry.firstRootInside(start[k], start[k + 1], start[k + 2], x[k], x[k + 1], x[k + 2], start, x, a, b, d, SLACK, 0, noise, scratch);
-                if (tau < 0) continue;
-                found++;
-                sh.stop(i, a, b, d, putBack ? 0 : keep(tau, apart2));
-            }
+        if (passLists) list(sh, id, count);
+        final int[] faces = sh.faces, edgePairs = sh.edgePairs;
+        for (int c = 0, lastI = -1, k = 0; c < sh.faceCount; c++) {
+            final int i = faces[2 * c], t = faces[2 * c + 1];
+            if (i != lastI) { sh.sweptBox(start, x, i, i); lastI = i; k = 3 * i; }
+            final int a = triangles[3 * t], b = triangles[3 * t + 1], d = triangles[3 * t + 2];
+            if (w[i] + w[a] + w[b] + w[d] == 0 || !sh.overlaps(triangleBox, t)) continue;
+            final int o = 4 * (edgeCount + t);
+            final double cx = start[k] - sphere[o], cy = start[k + 1] - sphere[o + 1], cz = start[k + 2] - sphere[o + 2];
+            final double bound = sphere[o + 3] + moved[i] + triangleMove[t] + PAD;
+            if (cx * cx + cy * cy + cz * cz > bound * bound) continue;
+            // Apart by more than they move (any point of the face moves at most as far as its fastest corner): no contact.
+            TriangleGeometry.closestPoint(start[k], start[k + 1], start[k + 2], start, a, b, d, closest);
+            final double gx = closest[0] - start[k], gy = closest[1] - start[k + 1], gz = closest[2] - start[k + 2];
+            final double reach = moved[i] + triangleMove[t] + PAD, apart2 = gx * gx + gy * gy + gz * gz;
+            if (apart2 > reach * reach) continue;
+            TriangleGeometry.coplanarCubic(start, x, a, b, d, start[k], start[k + 1], start[k + 2], x[k], x[k + 1], x[k + 2], scratch);
+            final double noise = roundOff(start, a, b, d, i);
+            if (oneSigned(scratch, noise)) continue;
+            double tau = TriangleGeometry.firstRootInside(start[k], start[k + 1], start[k + 2], x[k], x[k + 1], x[k + 2], start, x, a, b, d, SLACK, 0, noise, scratch);
+            if (tau < 0) continue;
+            found++;
+            sh.stop(i, a, b, d, putBack ? 0 : keep(tau, apart2));
         }
-        for (int e = (int) ((long) edgeCount * id / count), last = (int) ((long) edgeCount * (id + 1) / count); e < last; e++) {
-            final int p = edges[2 * e], q = edges[2 * e + 1];
-            final int[] edgeSeen = sh.edgeSeen;
-            if (++sh.edgeStamp == Integer.MAX_VALUE) { Arrays.fill(edgeSeen, 0); sh.edgeStamp = 1; }
-            final int stamp = sh.edgeStamp;
-            final int m = query(sh, start, x, p, q);
+        for (int c = 0, lastE = -1, p = 0, q = 0; c < sh.edgePairCount; c++) {
+            final int e = edgePairs[2 * c], f = edgePairs[2 * c + 1];
+            if (e != lastE) { p = edges[2 * e]; q = edges[2 * e + 1]; sh.sweptBox(start, x, p, q); lastE = e; }
+            final int r = edges[2 * f], s = edges[2 * f + 1];
+            if (w[p] + w[q] + w[r] + w[s] == 0 || !sh.nearSwept(start, x, r, s, gap)) continue;
+            final double reach = edgeMove[e] + edgeMove[f] + PAD;
+            // Bounding spheres at the start farther apart than the features can move: no contact.
+            final double cx = sphere[4 * e] - sphere[4 * f], cy = sphere[4 * e + 1] - sphere[4 * f + 1], cz = sphere[4 * e + 2] - sphere[4 * f + 2];
+            final double bound = sphere[4 * e + 3] + sphere[4 * f + 3] + reach;
+            if (cx * cx + cy * cy + cz * cz > bound * bound) continue;
+            final double apart2 = segmentDistanceSquared(0, p, q, r, s, start, start);
+            if (apart2 > reach * reach) continue;
+            TriangleGeometry.coplanarCubic(start, x, p, q, r, start[3 * s], start[3 * s + 1], start[3 * s + 2], x[3 * s], x[3 * s + 1], x[3 * s + 2], scratch);
+            final double noise = roundOff(start, p, q, r, s);
+            if (flat(scratch, noise)) {
+                // Four points in one plane all the substep (a layer pressed flat on the floor): the cubic is
+                // round-off and its roots say nothing; edges that cross in the plane at the end and did not at
+                // the start crossed during it. Their particles go back where the substep began.
+                if (segmentsMeet(1, p, q, r, s, start, x) && !segmentsMeet(0, p, q, r, s, start, x)) {
+                    found++;
+                    sh.stop(p, q, r, s, 0);
+                }
+                continue;
+            }
+            if (oneSigned(scratch, noise)) continue;
+            double tau = firstEdgeContact(p, q, r, s, start, x, noise, scratch);
+            if (tau < 0) continue;
+            found++;
+            sh.stop(p, q, r, s, putBack ? 0 : keep(tau, apart2));
+        }
+        sh.found = found;
+    }
+
+    /**
+     * Lists share id's candidates from the grid of the triangles' reaches: its vertices against the faces
+     * whose reach overlaps theirs (not their own), its edges against the edges of such faces (each pair once,
+     * by the lower-numbered edge; not sharing a vertex), in ascending order of vertex and of edge.
+     */
+    private void list(Share sh, int id, int count) {
+        sh.faceCount = 0;
+        for (int i = (int) ((long) particles * id / count), last = (int) ((long) particles * (id + 1) / count); i < last; i++) {
+            final int m = sh.reachQuery(i, i);
             final int[] candidates = sh.query.found();
             for (int c = 0; c < m; c++) {
                 final int t = candidates[c];
-                if (!sh.overlaps(triangleBox, t)) continue;
+                if (i == triangles[3 * t] || i == triangles[3 * t + 1] || i == triangles[3 * t + 2] || !sh.overlaps(triangleReach, t)) continue;
+                sh.addFace(i, t);
+            }
+        }
+        sh.edgePairCount = 0;
+        final int edgeCount = edges.length / 2;
+        final int[] edgeSeen = sh.edgeSeen;
+        for (int e = (int) ((long) edgeCount * id / count), last = (int) ((long) edgeCount * (id + 1) / count); e < last; e++) {
+            final int p = edges[2 * e], q = edges[2 * e + 1];
+            if (++sh.edgeStamp == Integer.MAX_VALUE) { Arrays.fill(edgeSeen, 0); sh.edgeStamp = 1; }
+            final int stamp = sh.edgeStamp;
+            final int m = sh.reachQuery(p, q);
+            final int[] candidates = sh.query.found();
+            for (int c = 0; c < m; c++) {
+                final int t = candidates[c];
+                if (!sh.overlaps(triangleReach, t)) continue;
                 for (int side = 0; side < 3; side++) {
                     final int f = triangleEdges[3 * t + side];
                     if (f <= e || edgeSeen[f] == stamp) continue;
                     edgeSeen[f] = stamp;
                     final int r = edges[2 * f], s = edges[2 * f + 1];
-                    if (r == p || r == q || s == p || s == q || w[p] + w[q] + w[r] + w[s] == 0) continue;
-                    final double reach = edgeMove[e] + edgeMove[f] + PAD;
-                    // Bounding spheres at the start farther apart than the features can move: no contact.
-                    final double cx = sphere[4 * e] - sphere[4 * f], cy = sphere[4 * e + 1] - sphere[4 * f + 1], cz = sphere[4 * e + 2] - sphere[4 * f + 2];
-                    final double bound = sphere[4 * e + 3] + sphere[4 * f + 3] + reach;
-                    if (cx * cx + cy * cy + cz * cz > bound * bound) continue;
-                    final double apart2 = segmentDistanceSquared(0, p, q, r, s, start, start);
-                    if (apart2 > reach * reach) continue;
-                    TriangleGeometry.coplanarCubic(start, x, p, q, r, start[3 * s], start[3 * s + 1], start[3 * s + 2], x[3 * s], x[3 * s + 1], x[3 * s + 2], scratch);
-                    final double noise = roundOff(start, p, q, r, s);
-                    if (flat(scratch, noise)) {
-                        // Four points in one plane all the substep (a layer pressed flat on the floor): the cubic is
-                        // round-off and its roots say nothing; edges that cross in the plane at the end and did not at
-                        // the start crossed during it. Their particles go back where the substep began.
-                        if (segmentsMeet(1, p, q, r, s, start, x) && !segmentsMeet(0, p, q, r, s, start, x)) {
-                            found++;
-                            sh.stop(p, q, r, s, 0);
-                        }
-                        continue;
-                    }
-                    if (oneSigned(scratch, noise)) continue;
-                    double tau = firstEdgeContact(p, q, r, s, start, x, noise, scratch);
-                    if (tau < 0) continue;
-                    found++;
-                    sh.stop(p, q, r, s, putBack ? 0 : keep(tau, apart2));
+                    if (r == p || r == q || s == p || s == q || !sh.nearReach(r, s, gap)) continue;
+                    sh.addEdgePair(e, f);
                 }
             }
         }
-        sh.found = found;
     }
 
-    /** The triangles whose swept boxes overlap the swept box of particles i and j (one particle when i == j), into candidates. */
-    private int query(Share sh, double[] start, double[] x, int i, int j) {
-        final int a = 3 * i, b = 3 * j;
-        final double lx = Math.min(Math.min(start[a], x[a]), Math.min(start[b], x[b])) - PAD;
-        final double ly = Math.min(Math.min(start[a + 1], x[a + 1]), Math.min(start[b + 1], x[b + 1])) - PAD;
-        final double lz = Math.min(Math.min(start[a + 2], x[a + 2]), Math.min(start[b + 2], x[b + 2])) - PAD;
-        final double hx = Math.max(Math.max(start[a], x[a]), Math.max(start[b], x[b])) + PAD;
-        final double hy = Math.max(Math.max(start[a + 1], x[a + 1]), Math.max(start[b + 1], x[b + 1])) + PAD;
-        final double hz = Math.max(Math.max(start[a + 2], x[a + 2]), Math.max(start[b + 2], x[b + 2])) + PAD;
-        sh.lx = lx; sh.ly = ly; sh.lz = lz; sh.hx = hx; sh.hy = hy; sh.hz = hz;
-        return grid.query(sh.query, lx, ly, lz, hx, hy, hz);
+    /** Whether every particle's start and end lie inside its reach (false for a non-finite one). */
+    private boolean withinReach(double[] start, double[] x) {
+        for (int i = 0; i < particles; i++)
+            for (int d = 0; d < 3; d++) {
+                final int k = 3 * i + d;
+                final double lo = particleReach[6 * i + d], hi = particleReach[6 * i + 3 + d];
+                if (!(start[k] >= lo && start[k] <= hi && x[k] >= lo && x[k] <= hi)) return false;
+            }
+        return true;
+    }
+
+    /** New reaches about this substep's motion (start → x) grown by the skin, and their grid; the first pass lists the candidates from it. */
+    private void relist(double[] start, double[] x) {
+        for (int i = 0; i < particles; i++)
+            for (int d = 0; d < 3; d++) {
+                final int k = 3 * i + d;
+                particleReach[6 * i + d] = Math.min(start[k], x[k]) - skin - PAD;
+                particleReach[6 * i + 3 + d] = Math.max(start[k], x[k]) + skin + PAD;
+            }
+        for (int t = 0, count = triangles.length / 3; t < count; t++)
+            for (int d = 0; d < 3; d++) {
+                double lo = Double.MAX_VALUE, hi = -Double.MAX_VALUE;
+                for (int corner = 0; corner < 3; corner++) {
+                    final int v = triangles[3 * t + corner];
+                    lo = Math.min(lo, particleReach[6 * v + d]);
+                    hi = Math.max(hi, particleReach[6 * v + 3 + d]);
+                }
+                triangleReach[6 * t + d] = lo;
+                triangleReach[6 * t + 3 + d] = hi;
+            }
+        grid.build(triangleReach, triangles.length / 3);
+        listed = true;
+        passLists = true;
     }
 
     /** The first root τ ∈ (0, 1] of the cubic in scratch at which edges (p, q) and (r, s) meet, or 1 if it ends within round-off of 0 with them meeting; −1 if none. */
@@ -424,8 +501,56 @@ public final class CrossingGuard implements Team.Job {
         final int[] edgeSeen = new int[edges.length / 2];
         int edgeStamp, found;
         final TriangleGrid.Query query = new TriangleGrid.Query();
-        /** The last query's box. */
+        /** The candidates: (vertex, triangle) and (edge, edge) pairs, two numbers each. */
+        int[] faces = new int[64], edgePairs = new int[64];
+        int faceCount, edgePairCount;
+        /** The box the overlap tests compare with. */
         double lx, ly, lz, hx, hy, hz;
+
+        void addFace(int i, int t) {
+            if (2 * faceCount == faces.length) faces = Arrays.copyOf(faces, 2 * faces.length);
+            faces[2 * faceCount] = i;
+            faces[2 * faceCount++ + 1] = t;
+        }
+
+        void addEdgePair(int e, int f) {
+            if (2 * edgePairCount == edgePairs.length) edgePairs = Arrays.copyOf(edgePairs, 2 * edgePairs.length);
+            edgePairs[2 * edgePairCount] = e;
+            edgePairs[2 * edgePairCount++ + 1] = f;
+        }
+
+        /** The box of particles i's and j's reaches; the triangles whose cells it overlaps, into the query. */
+        int reachQuery(int i, int j) {
+            lx = Math.min(particleReach[6 * i], particleReach[6 * j]); ly = Math.min(particleReach[6 * i + 1], particleReach[6 * j + 1]); lz = Math.min(particleReach[6 * i + 2], particleReach[6 * j + 2]);
+            hx = Math.max(particleReach[6 * i + 3], particleReach[6 * j + 3]); hy = Math.max(particleReach[6 * i + 4], particleReach[6 * j + 4]); hz = Math.max(particleReach[6 * i + 5], particleReach[6 * j + 5]);
+            return grid.query(query, lx, ly, lz, hx, hy, hz);
+        }
+
+        /** Whether the box of particles i's and j's reaches comes within g of the last query's box. */
+        boolean nearReach(int i, int j, double g) {
+            return !(Math.min(particleReach[6 * i], particleReach[6 * j]) > hx + g || Math.max(particleReach[6 * i + 3], particleReach[6 * j + 3]) < lx - g
+                    || Math.min(particleReach[6 * i + 1], particleReach[6 * j + 1]) > hy + g || Math.max(particleReach[6 * i + 4], particleReach[6 * j + 4]) < ly - g
+                    || Math.min(particleReach[6 * i + 2], particleReach[6 * j + 2]) > hz + g || Math.max(particleReach[6 * i + 5], particleReach[6 * j + 5]) < lz - g);
+        }
+
+        /** Whether the box swept by particles i and j over the pass's motion comes within g of the last swept box. */
+        boolean nearSwept(double[] start, double[] x, int i, int j, double g) {
+            final int a = 3 * i, b = 3 * j;
+            return !(Math.min(Math.min(start[a], x[a]), Math.min(start[b], x[b])) > hx + g || Math.max(Math.max(start[a], x[a]), Math.max(start[b], x[b])) < lx - g
+                    || Math.min(Math.min(start[a + 1], x[a + 1]), Math.min(start[b + 1], x[b + 1])) > hy + g || Math.max(Math.max(start[a + 1], x[a + 1]), Math.max(start[b + 1], x[b + 1])) < ly - g
+                    || Math.min(Math.min(start[a + 2], x[a + 2]), Math.min(start[b + 2], x[b + 2])) > hz + g || Math.max(Math.max(start[a + 2], x[a + 2]), Math.max(start[b + 2], x[b + 2])) < lz - g);
+        }
+
+        /** The box swept by particles i and j (one particle when i == j) over the pass's motion, padded. */
+        void sweptBox(double[] start, double[] x, int i, int j) {
+            final int a = 3 * i, b = 3 * j;
+            lx = Math.min(Math.min(start[a], x[a]), Math.min(start[b], x[b])) - PAD;
+            ly = Math.min(Math.min(start[a + 1], x[a + 1]), Math.min(start[b + 1], x[b + 1])) - PAD;
+            lz = Math.min(Math.min(start[a + 2], x[a + 2]), Math.min(start[b + 2], x[b + 2])) - PAD;
+            hx = Math.max(Math.max(start[a], x[a]), Math.max(start[b], x[b])) + PAD;
+            hy = Math.max(Math.max(start[a + 1], x[a + 1]), Math.max(start[b + 1], x[b + 1])) + PAD;
+            hz = Math.max(Math.max(start[a + 2], x[a + 2]), Math.max(start[b + 2], x[b + 2])) + PAD;
+        }
 
         /** Whether triangle t's swept box overlaps the last query's box. */
         boolean overlaps(double[] box, int t) {
