@@ -33,16 +33,16 @@ import java.util.Arrays;
  * judged in that plane, edges that meet at the end and did not at the start being put back.
  *
  * <p>Candidates: each vertex with the faces, and each edge with the edges, whose boxes could overlap over
- * the substep, listed from a {@link TriangleGrid} of the triangles' reaches (each particle's motion grown by
- * a skin of {@link #SKIN_EDGES} mean edges) and kept across substeps while every particle stays within its
- * reach (a Verlet list, as the particle pairs keep theirs): searching a grid rebuilt every pass was most of
- * the guard's time, and a cloth that folds slowly keeps its lists for several substeps. The skin sets only
- * how often the lists are made and how long they are, never what is found. Each pass clears the listed pairs by their
- * swept boxes, bounding spheres, the distance at the start against the most the features can move, and the
- * cubic's Bernstein coefficients, before any root is sought. Edge pairs are listed once (the lower-numbered
- * edge holds them). On the solver's team each thread lists and sweeps its share of vertices and edges into
- * cuts of its own, and the smallest is taken: the same bits on any thread count. Nothing is allocated in a
- * substep except when a list is longer than ever before.
+ * the substep, listed from a {@link TriangleGrid} of the triangles' reaches (each particle's motion grown
+ * by a skin of {@link #SKIN_EDGES} mean edges) and kept across substeps while every particle stays within
+ * its reach (a Verlet list, as the particle pairs keep theirs): searching a grid rebuilt every pass was
+ * most of the guard's time, and a cloth that folds slowly keeps its lists for several substeps. The skin
+ * sets only how often the lists are made and how long they are, never what is found. Each pass clears the
+ * listed pairs by their swept boxes, bounding spheres, the distance at the start against the most the
+ * features can move, and the cubic's Bernstein coefficients, before any root is sought. Edge pairs are
+ * listed once (the lower-numbered edge holds them). On the solver's team each thread lists and sweeps its
+ * share of vertices and edges into cuts of its own, and the smallest is taken: the same bits on any thread
+ * count. Nothing is allocated in a substep except when a list is longer than ever before.
  * Where it fails: a root at τ = 0 (a vertex exactly in a face's plane and inside it at the substep's start)
  * is taken as a touch, not a crossing; pinned particles pushed through the cloth by their script cannot be
  * stopped (counted in {@link #unresolved()}); a cloth that is already crossed stays so (it keeps a clean
