@@ -32,7 +32,8 @@ final class ExactDecay {
      * none (their script moves them; a force would do nothing). Added past {@link Particles#addForce}'s range,
      * which bounds what a caller may push: the decay already bounds what this force does, w·scale·|F|·dt ≤ the
      * flow's speed past the particle, while the force itself on a heavy particle in a dense, fast flow can
-     * rightly exceed any such range (the fuzzer found a 500 m flag in 140 m/s air at 1e9 N).
+     * rightly exceed any such range (the fuzzer found a 500 m flag in 140 m/s air at
+     * 1.4e9 N on one component, about 1e10 N at a corner).
      */
     void apply(Particles p, double dt) {
         final double[] force = p.force, w = p.w;

@@ -51,11 +51,6 @@ public final class TriangleEdges {
     /** The edge that side s (slot 3t + e of the triangle array) walks. */
     public int edgeOf(int side) { return edgeOfSide[side]; }
 
-    /** Edge e's lower and higher vertex. */
-    public int lower(int e) { return ends[2 * e]; }
-
-    public int upper(int e) { return ends[2 * e + 1]; }
-
     /** How many triangles have edge e (1 on a border, 2 inside a manifold mesh). */
     public int uses(int e) { return uses[e]; }
 
