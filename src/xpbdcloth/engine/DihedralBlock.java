@@ -85,7 +85,7 @@ public final class DihedralBlock extends ConstraintBlock {
      * θ of constraint i, and ∇θ into g[0..11] (p₀, p₁, p₂, p₃); NaN (and g untouched) when a triangle
      * has no normal.
      */
-    private double angleAndGradient(int i, double[] x, double[] g) {
+    double angleAndGradient(int i, double[] x, double[] g) {
         final int a = 3 * particles[4 * i], b = 3 * particles[4 * i + 1], c = 3 * particles[4 * i + 2], d = 3 * particles[4 * i + 3];
         double ex = x[d] - x[c], ey = x[d + 1] - x[c + 1], ez = x[d + 2] - x[c + 2];
         double el2 = ex * ex + ey * ey + ez * ez;
@@ -116,7 +116,7 @@ public final class DihedralBlock extends ConstraintBlock {
     }
 
     /** θ − θ₀ wrapped into (−π, π]: a fold through the flat state is one angle, not two. */
-    private double wrapped(int i, double theta) {
+    double wrapped(int i, double theta) {
         double c = theta - restAngle[i];
         if (c > Math.PI) c -= 2 * Math.PI;
         else if (c <= -Math.PI) c += 2 * Math.PI;

@@ -14,6 +14,8 @@ import java.util.List;
  * contacts, so hard contacts have the last word; then the self-collision's {@link CrossingGuard}, if any,
  * cuts back motion that would pass the cloth through itself), update velocities, velocity pass (damping).
  *
+ * <p>After a step is kept, bending that yields moves its rest angles ({@link HingePlasticity}).
+ *
  * <p>Last line of defence: the state is copied before every step (into arrays made once) and checked
  * after it; a step that leaves a non-finite number, or throws, is undone and reported, never kept.
  *
@@ -30,6 +32,8 @@ public final class Simulation {
     private final List<Plane> planes = new ArrayList<>();
     /** The cloth's contacts with itself, or null. */
     private SelfCollision self;
+    /** Bending that yields after each kept step, or null. */
+    private HingePlasticity plasticity;
     private final ContactSet contacts = new ContactSet();
     private final List<Kinematics> kinematics = new ArrayList<>();
     private final List<ExternalForce> forces = new ArrayList<>();
@@ -145,6 +149,17 @@ public final class Simulation {
         return this;
     }
 
+    /** Makes the hinges of this simulation's dihedral blocks yield (replacing any earlier plasticity); null turns it off. */
+    public Simulation plasticity(HingePlasticity p) {
+        if (p != null && !constraints.cloth().containsAll(p.blocks()))
+            throw new IllegalArgumentException("plasticity was made for blocks this simulation does not hold");
+        plasticity = p;
+        return this;
+    }
+
+    /** The bending's plasticity, or null when bending is elastic. */
+    public HingePlasticity plasticity() { return plasticity; }
+
     public Simulation add(Kinematics k) {
         if (k == null) throw new IllegalArgumentException("kinematics must not be null, was null");
         kinematics.add(k);
@@ -213,6 +228,8 @@ public final class Simulation {
             throw new SimulationDivergedException(stepCount + 1, failed);
         }
         if (!Metrics.allFinite(particles)) throw diverged(dt);
+        // After the step is kept: an undone step must leave the rest angles as they were too.
+        if (plasticity != null) plasticity.flow(particles, dt);
     }
 
     /**

@@ -37,6 +37,16 @@ public final class FabricConstraints {
      */
     public static List<ConstraintBlock> build(Particles p, int[] triangles, double[] warp, OrthotropicMaterial membrane,
                                               double bendingStiffness, boolean tethers) {
+        return build(p, triangles, warp, membrane, bendingStiffness, tethers, false);
+    }
+
+    /**
+     * As {@link #build(Particles, int[], double[], OrthotropicMaterial, double, boolean)}, with bending that may
+     * yield: then every hinge is a {@link DihedralBlock}, the one model whose rest angle can move
+     * ({@link xpbdcloth.engine.HingePlasticity}); the quadratic models hold a flat rest.
+     */
+    public static List<ConstraintBlock> build(Particles p, int[] triangles, double[] warp, OrthotropicMaterial membrane,
+                                              double bendingStiffness, boolean tethers, boolean yielding) {
         if (triangles == null || triangles.length == 0 || triangles.length % 3 != 0)
             throw new IllegalArgumentException("triangles must hold three indices per triangle, had " + (triangles == null ? "null" : triangles.length));
         if (warp == null || warp.length != 3 && warp.length != triangles.length)
@@ -48,7 +58,7 @@ public final class FabricConstraints {
             m.addTriangle(p, triangles[t], triangles[t + 1], triangles[t + 2], warp[w], warp[w + 1], warp[w + 2], membrane);
         }
         List<ConstraintBlock> blocks = new ArrayList<>(List.of(m));
-        blocks.addAll(bends(p, triangles, bendingStiffness));
+        blocks.addAll(yielding ? hinges(p, triangles, bendingStiffness, true) : bends(p, triangles, bendingStiffness));
         if (tethers) {
             TetherBlock t = tethers(p, triangles);
             if (t.count() > 0) blocks.add(t);
@@ -98,7 +108,7 @@ public final class FabricConstraints {
             for (int e = 0; e < 3; e++) {
                 int across = patch.across(t / 3, e);
                 if (across >= 0 && !QuadraticBendBlock.isFlat(p, triangles[t + (e + 2) % 3], across, triangles[t + (e + 1) % 3], triangles[t + e], FLAT))
-                    return hinges(p, triangles, bendingStiffness);
+                    return hinges(p, triangles, bendingStiffness, false);
             }
         return new ArrayList<>(patches(p, triangles, patch, bendingStiffness));
     }
@@ -109,8 +119,9 @@ public final class FabricConstraints {
      * is bent (a rest shape the quadratic model cannot hold), with the discrete-shell weight B|e|²/(A₀ + A₁).
      * A hinge model's stiffness depends on the triangulation (see {@link BendingPatch}): what a cloth bent at
      * rest gets, and the model the patches are measured against. The blocks that have any, in that order.
+     * With {@code allDihedral}, flat hinges are dihedral too (a rest angle that may change).
      */
-    static List<ConstraintBlock> hinges(Particles p, int[] triangles, double bendingStiffness) {
+    static List<ConstraintBlock> hinges(Particles p, int[] triangles, double bendingStiffness, boolean allDihedral) {
         QuadraticBendBlock flat = new QuadraticBendBlock(ConstraintFamily.DIHEDRAL, triangles.length / 2);
         DihedralBlock bent = new DihedralBlock(ConstraintFamily.DIHEDRAL, 16);
         TriangleEdges edges = TriangleEdges.of(triangles, p.count());
@@ -121,7 +132,7 @@ public final class FabricConstraints {
             int first = edges.firstSide(edge), t = s - s % 3, a = triangles[s], b = triangles[t + (s % 3 + 1) % 3], opposite = triangles[t + (s % 3 + 2) % 3];
             int other = triangles[first - first % 3 + (first % 3 + 2) % 3];
             // The edge as the first triangle walked it (b→a, the second walking it a→b): the order fixes the angle's sign convention.
-            if (QuadraticBendBlock.isFlat(p, other, opposite, b, a, FLAT)) flat.addAtCurrentShape(p, other, opposite, b, a, bendingStiffness);
+            if (!allDihedral && QuadraticBendBlock.isFlat(p, other, opposite, b, a, FLAT)) flat.addAtCurrentShape(p, other, opposite, b, a, bendingStiffness);
             else bent.addAtCurrentShape(p, other, opposite, b, a, bendingStiffness);
         }
         List<ConstraintBlock> out = new ArrayList<>();

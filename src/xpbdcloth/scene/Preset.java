@@ -98,10 +98,19 @@ public final class Preset {
         /** The warp direction, or null: then each triangle's from the mesh's texture coordinates (u grows along the warp). */
         public final double[] warp;
         public final boolean tethers;
+        /** Bending that yields, or null (elastic). */
+        public final PlasticitySpec plasticity;
 
-        FabricSpec(xpbdcloth.fabric.Fabric fabric, double[] warp, boolean tethers) {
-            this.fabric = fabric; this.warp = warp == null ? null : warp.clone(); this.tethers = tethers;
+        FabricSpec(xpbdcloth.fabric.Fabric fabric, double[] warp, boolean tethers, PlasticitySpec plasticity) {
+            this.fabric = fabric; this.warp = warp == null ? null : warp.clone(); this.tethers = tethers; this.plasticity = plasticity;
         }
+    }
+
+    /** A bend sharper than the yield curvature (1/m) moves its rest angle at the rate (1/s): a crease ({@link xpbdcloth.engine.HingePlasticity}). */
+    public static final class PlasticitySpec {
+        public final double yieldCurvature, rate;
+
+        PlasticitySpec(double yieldCurvature, double rate) { this.yieldCurvature = yieldCurvature; this.rate = rate; }
     }
 
     /**

@@ -40,7 +40,7 @@ import xpbdcloth.mesh.UsdaReader;
  */
 public final class PresetLoader {
     /** The presets that ship with the project, in the order the sketch offers them. */
-    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth", "table", "arm", "drop-fold", "fabric", "flag-fabric", "drape", "denim-fold", "mannequin-poncho", "mannequin-turn", "torus-spin");
+    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth", "table", "arm", "drop-fold", "fabric", "flag-fabric", "drape", "denim-fold", "mannequin-poncho", "mannequin-turn", "torus-spin", "crease");
 
     private static final ObjectMapper JSON = new ObjectMapper()
             .enable(JsonParser.Feature.STRICT_DUPLICATE_DETECTION);
@@ -524,7 +524,7 @@ public final class PresetLoader {
         Preset.FabricSpec fabric(Node n) {
             List<String> moduli = List.of("name", "warpModulus", "weftModulus", "poisson", "shearModulus", "bendingStiffness");
             Set<String> allowed = new java.util.HashSet<>(moduli);
-            allowed.addAll(Set.of("catalogue", "warp", "tethers"));
+            allowed.addAll(Set.of("catalogue", "warp", "tethers", "plasticity"));
             object(n, allowed);
             Node cat = optional(n, "catalogue");
             Fabric material;
@@ -555,8 +555,13 @@ public final class PresetLoader {
             double[] warp = wd == null ? null : vector(wd, Limits.NORMAL);
             if (warp != null && Math.sqrt(warp[0] * warp[0] + warp[1] * warp[1] + warp[2] * warp[2]) < 1e-3)
                 throw fail(wd.path, "must be a direction (length at least 1e-3), was " + java.util.Arrays.toString(warp));
-            Node t = optional(n, "tethers");
-            return new Preset.FabricSpec(material, warp, t != null && bool(t));
+            Node t = optional(n, "tethers"), pl = optional(n, "plasticity");
+            Preset.PlasticitySpec plasticity = null;
+            if (pl != null) {
+                object(pl, Set.of("yieldCurvature", "rate"));
+                plasticity = new Preset.PlasticitySpec(number(required(pl, "yieldCurvature"), Limits.YIELD_CURVATURE), number(required(pl, "rate"), Limits.PLASTIC_RATE));
+            }
+            return new Preset.FabricSpec(material, warp, t != null && bool(t), plasticity);
         }
 
         /** The fabric catalogue: a source for all, and per fabric its data-driven sample (see {@link DataDrivenSample}). */

@@ -2,6 +2,7 @@ package xpbdcloth.scene;
 
 import xpbdcloth.engine.Aerodynamics;
 import xpbdcloth.engine.ConstraintBlock;
+import xpbdcloth.engine.HingePlasticity;
 import xpbdcloth.fabric.Fabric;
 import xpbdcloth.fabric.FabricConstraints;
 import xpbdcloth.fabric.FabricSwap;
@@ -42,8 +43,10 @@ public final class Scene {
         if (preset.fabric != null) {
             Preset.FabricSpec f = preset.fabric;
             double[] warp = f.warp != null ? f.warp : FabricConstraints.warpFromTextureCoordinates(cloth.particles(), cloth.triangles(), preset.cloth.mesh.triangleUVs());
-            for (ConstraintBlock b : FabricConstraints.build(cloth.particles(), cloth.triangles(), warp, f.fabric.membrane, f.fabric.bendingStiffness, f.tethers))
+            for (ConstraintBlock b : FabricConstraints.build(cloth.particles(), cloth.triangles(), warp, f.fabric.membrane, f.fabric.bendingStiffness, f.tethers, f.plasticity != null))
                 simulation.add(b);
+            if (f.plasticity != null)
+                simulation.plasticity(new HingePlasticity(simulation.blocks(), cloth.particles(), f.plasticity.yieldCurvature, f.plasticity.rate));
             fabric = f.fabric;
         }
         if (preset.aerodynamics != null) {

@@ -93,7 +93,7 @@ final class Hud {
                 km == null ? (fabric == null ? "" : fmt("  membrane warp %.0f N/m  weft %.0f N/m  ν12 %.2f  shear %.0f N/m", fabric.membrane.warpModulus,
                         fabric.membrane.weftModulus, fabric.membrane.poisson, fabric.membrane.shearModulus))
                         : fmt("  PBD  k %.2f  →  k' %.4f %s", km.stiffness, kPrime(s, km.stiffness), s.mullerCorrection() ? "(Müller, n=" + s.iterations() + ")" : "(raw k)"),
-                km == null ? (fabric == null ? "" : fmt("  bending %.1e N·m, the plate's on every triangle%s", fabric.bendingStiffness,
+                km == null ? (fabric == null ? "" : fmt("  bending %.1e N·m, %s%s", fabric.bendingStiffness, bendingModel(sim),
                         Double.isNaN(fabric.arealDensity) ? "" : fmt("   %.0f g/m²", 1000 * fabric.arealDensity)))
                         : fmt("  XPBD α %.2e m/N  →  1/α %s", km.compliance, km.compliance == 0 ? "infinite (hard)" : fmt("%.2e N/m", 1 / km.compliance)),
                 recording ? fmt("recording: %.4g frames per simulated second (wall-clock timings not drawn)", 1 / (xpbdcloth.scene.ObjExport.stepsPerFrame(s.dt()) * s.dt()))
@@ -286,5 +286,14 @@ final class Hud {
     static String pinched(Simulation sim) {
         int n = sim.profile().pinchedParticles();
         return n == 0 ? "" : fmt(", %d pinched inside a collider", n);
+    }
+
+    /** How the fabric bends: plate patches on a flat rest, dihedral hinges where it is bent or may yield (a crease). */
+    static String bendingModel(Simulation sim) {
+        xpbdcloth.engine.HingePlasticity plastic = sim.plasticity();
+        if (plastic != null) return fmt("dihedral hinges yielding past %.3g/m (a crease)", plastic.yieldCurvature());
+        for (xpbdcloth.engine.ConstraintBlock b : sim.blocks())
+            if (b instanceof xpbdcloth.engine.DihedralBlock) return "dihedral hinges (a bent rest)";
+        return "the plate's on every triangle";
     }
 }

@@ -116,7 +116,7 @@ class FabricConstraintMathsTest {
             for (int axis = 0; axis < 2; axis++) {
                 Cloth cloth = sheet(n, size);
                 Particles p = cloth.particles();
-                QuadraticBendBlock quadratic = (QuadraticBendBlock) FabricConstraints.hinges(p, cloth.triangles(), bending).get(0);
+                QuadraticBendBlock quadratic = (QuadraticBendBlock) FabricConstraints.hinges(p, cloth.triangles(), bending, false).get(0);
                 DihedralBlock dihedral = new DihedralBlock(ConstraintFamily.DIHEDRAL, quadratic.hingeCount());
                 for (int u = 0; u < quadratic.hingeCount(); u++)
                     dihedral.addAtCurrentShape(p, quadratic.particle(3 * u, 0), quadratic.particle(3 * u, 1), quadratic.particle(3 * u, 2), quadratic.particle(3 * u, 3), bending);
@@ -140,7 +140,7 @@ class FabricConstraintMathsTest {
     void aBendsThreeRowsShareOneComplianceSoItsEnergyDoesNotDependOnTheFrame() {
         Cloth cloth = sheet(9, 0.3);
         Particles p = cloth.particles();
-        QuadraticBendBlock quadratic = (QuadraticBendBlock) FabricConstraints.hinges(p, cloth.triangles(), 2e-5).get(0);
+        QuadraticBendBlock quadratic = (QuadraticBendBlock) FabricConstraints.hinges(p, cloth.triangles(), 2e-5, false).get(0);
         // Half the units stiffer, set through their y row alone (as a Constraint view would).
         for (int u = 0; u < quadratic.hingeCount(); u += 2) quadratic.setCompliance(3 * u + 1, 0.25 * quadratic.compliance(3 * u + 1));
         for (int u = 0; u < quadratic.hingeCount(); u++)

@@ -77,11 +77,6 @@ class PresetLoaderTest {
     static final String COTTONISH = "\"warpModulus\": 2000, \"weftModulus\": 800, \"poisson\": 0.25, \"shearModulus\": 30, \"bendingStiffness\": 1e-5, \"warp\": [1, 0, 0]";
 
     /**
-     * A fabric replaces the spring families (which become optional): the scene gets three membrane rows and
-     * three bending patch rows per triangle; moduli out of range, a Poisson ratio without a
-     * positive-definite stiffness and a zero warp direction are named by field.
-     */
-    /**
      * No material is refused for the mesh it is on: the softest bending the range allows loads on a fine grid
      * and on cells three times longer than wide (its patch rows' compliance is 1/B whatever the cells), and a
      * value below the range is named by its preset field.
@@ -100,6 +95,32 @@ class PresetLoaderTest {
         assertEquals("fabric.bendingStiffness", e.field());
     }
 
+    /**
+     * Bending that yields: the scene's hinges are all dihedral (one per interior edge) and yield; a curvature or rate
+     * of zero, an unknown field and a missing one are named by field.
+     */
+    @Test
+    void plasticityLoadsAndBadOnesAreNamed() {
+        String plastic = COTTONISH + ", \"plasticity\": { \"yieldCurvature\": 15, \"rate\": 2 }";
+        Scene scene = Scene.of(PresetLoader.parse("p.json", fabric(plastic)));
+        // 4 × 4: 18 triangles (3 membrane rows each) and 21 interior edges (33 edges less the 12 on the border).
+        assertEquals(18 * 3 + 21, scene.simulation().constraintCount());
+        assertEquals(15, scene.simulation().plasticity().yieldCurvature());
+        PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse("p.json", fabric(plastic.replace("\"yieldCurvature\": 15", "\"yieldCurvature\": 0"))));
+        assertEquals("fabric.plasticity.yieldCurvature", e.field());
+        e = assertThrows(PresetException.class, () -> PresetLoader.parse("p.json", fabric(plastic.replace("\"rate\": 2", "\"rate\": -1"))));
+        assertEquals("fabric.plasticity.rate", e.field());
+        e = assertThrows(PresetException.class, () -> PresetLoader.parse("p.json", fabric(plastic.replace("\"rate\": 2", "\"rate\": 2, \"yieldAngle\": 1"))));
+        assertTrue(e.getMessage().contains("yieldAngle"), e.getMessage());
+        e = assertThrows(PresetException.class, () -> PresetLoader.parse("p.json", fabric(plastic.replace(", \"rate\": 2", ""))));
+        assertEquals("fabric.plasticity.rate", e.field());
+    }
+
+    /**
+     * A fabric replaces the spring families (which become optional): the scene gets three membrane rows and
+     * three bending patch rows per triangle; moduli out of range, a Poisson ratio without a
+     * positive-definite stiffness and a zero warp direction are named by field.
+     */
     @Test
     void fabricLoadsAndBadOnesAreNamed() {
         Scene scene = Scene.of(PresetLoader.parse("f.json", fabric(COTTONISH + ", \"tethers\": true")));

@@ -324,9 +324,18 @@ public final class Fuzz implements Callable<Integer> {
             xpbdcloth.engine.OrthotropicMaterial membrane = new xpbdcloth.engine.OrthotropicMaterial(e1, e2, nu, logUniform(r, 1e-1, 1e7));
             double angle = 2 * Math.PI * r.nextDouble();
             double[] warp = cloth.particles().count() > 0 ? inPlane(cloth.particles(), triangles, angle) : new double[] {1, 0, 0};
+            double bending = logUniform(r, 1e-6, 1);
+            boolean tethers = r.nextBoolean();
+            // Bending that yields in one fabric of two, drawn from a stream of its own so the case's other draws stay.
+            Random own = new Random(Double.doubleToLongBits(e1) ^ Double.doubleToLongBits(bending));
+            boolean yielding = own.nextBoolean();
             for (xpbdcloth.engine.ConstraintBlock b : xpbdcloth.fabric.FabricConstraints.build(cloth.particles(), triangles, warp, membrane,
-                    logUniform(r, 1e-6, 1), r.nextBoolean()))
+                    bending, tethers, yielding))
                 sim.add(b);
+            boolean hinges = false;
+            for (xpbdcloth.engine.ConstraintBlock b : sim.blocks()) hinges |= b instanceof xpbdcloth.engine.DihedralBlock;
+            if (yielding && hinges)
+                sim.plasticity(new xpbdcloth.engine.HingePlasticity(sim.blocks(), cloth.particles(), logUniform(own, 0.1, 1e4), logUniform(own, 1e-4, 1e4)));
         }
         if (area && r.nextInt(4) == 0) {
             xpbdcloth.engine.Aerodynamics air = new xpbdcloth.engine.Aerodynamics(triangles, logUniform(r, 1e-3, 1e3), 10 * r.nextDouble(), 10 * r.nextDouble());

@@ -123,6 +123,12 @@ final class PresetFuzz {
             return range.lo + r.nextDouble() * (range.hi - range.lo);
         }
 
+        /** As {@link #draw} on a log scale, from another stream. */
+        static double logUniform(Random own, Limits.Range range) {
+            if (own.nextInt(4) == 0) return own.nextBoolean() ? range.lo : range.hi;
+            return Math.exp(Math.log(range.lo) + own.nextDouble() * (Math.log(range.hi) - Math.log(range.lo)));
+        }
+
         String num(double v) { return Double.toString(v); }
 
         /** A collider's path: fixed, linear, circle or oscillation. */
@@ -215,7 +221,14 @@ final class PresetFuzz {
                         .append(", \"poisson\": ").append(num(nu)).append(", \"shearModulus\": ").append(num(draw(Limits.MODULUS, true)))
                         .append(", \"bendingStiffness\": ").append(num(draw(Limits.BENDING_STIFFNESS, true)));
                 }
-                json.append(", \"warp\": [1, 0, 0], \"tethers\": ").append(r.nextBoolean()).append(" }");
+                json.append(", \"warp\": [1, 0, 0], \"tethers\": ").append(r.nextBoolean());
+                // Bending that yields in one fabric of two, drawn from a stream of its own (the preset so far) so that
+                // the case's other draws stay what they were.
+                Random own = new Random(json.toString().hashCode());
+                if (own.nextBoolean())
+                    json.append(", \"plasticity\": { \"yieldCurvature\": ").append(num(logUniform(own, Limits.YIELD_CURVATURE)))
+                        .append(", \"rate\": ").append(num(logUniform(own, Limits.PLASTIC_RATE))).append(" }");
+                json.append(" }");
             }
             boolean springs = !fabric || r.nextBoolean(); // a fabric needs no families; given, they are whole
             if (springs) json.append(", \"families\": { ");
