@@ -25,7 +25,7 @@ import java.util.List;
  * <p>It runs once after every step that the simulation kept (a step undone leaves the rest angles too), on the
  * hinges of the blocks it was made for, serially: the same rest angles on any number of threads.
  */
-public final class HingePlasticity {
+public final class HingePlasticity implements AfterStep {
     private final DihedralBlock[] blocks;
     /** θ_y per hinge of each block, rad. */
     private final double[][] yieldAngle;
@@ -64,8 +64,10 @@ public final class HingePlasticity {
         }
     }
 
-    /** The blocks whose hinges yield. */
-    List<DihedralBlock> blocks() { return List.of(blocks); }
+    @Override public void check(List<ConstraintBlock> held) {
+        for (DihedralBlock d : blocks)
+            if (!held.contains(d)) throw new IllegalArgumentException("plasticity was made for blocks this simulation does not hold");
+    }
 
     /** θ_y of hinge i of the k-th yielding block, rad. */
     public double yieldAngle(int k, int i) { return yieldAngle[k][i]; }
@@ -76,7 +78,7 @@ public final class HingePlasticity {
     public double yieldCurvature() { return yieldCurvature; }
 
     /** Moves every overstressed hinge's rest angle for a step of dt held at the particles' angles. */
-    void flow(Particles p, double dt) {
+    @Override public void afterStep(Particles p, double dt) {
         final double follow = -Math.expm1(-rate * dt);
         for (int k = 0; k < blocks.length; k++) {
             final DihedralBlock d = blocks[k];

@@ -92,17 +92,35 @@ public final class MembraneBlock extends ConstraintBlock {
     /** Gives triangle t the material m (rows and compliance; its rest shape and frame stay). */
     public void setMaterial(int t, OrthotropicMaterial m) {
         double[] q = m.stiffness();
-        double scale = Math.max(q[0], q[4]);
+        setStiffness(t, q[0], q[1], q[4], q[8]);
+    }
+
+    /**
+     * Gives triangle t the plane-stress stiffness Q (N/m) = [[q11, q12, 0], [q12, q22, 0], [0, 0, shear]] for
+     * ε = (E_uu, E_vv, γ); positive definite (q11, q22, shear > 0, q12² < q11·q22). Allocation-free, for a
+     * stiffness that follows the strain ({@code MeasuredStiffening}).
+     */
+    public void setStiffness(int t, double q11, double q12, double q22, double shear) {
+        if (!(q11 > 0 && q22 > 0 && shear > 0 && q12 * q12 < q11 * q22))
+            throw new IllegalArgumentException("stiffness must be positive definite, was q11 " + q11 + ", q12 " + q12 + ", q22 " + q22 + ", shear " + shear);
+        double scale = Math.max(q11, q22);
         // Q/scale = L Lᵀ with L lower triangular (Q has no normal–shear coupling in the material frame).
-        double l00 = Math.sqrt(q[0] / scale), l10 = q[1] / scale / l00, l11 = Math.sqrt(q[4] / scale - l10 * l10), l22 = Math.sqrt(q[8] / scale);
+        double l00 = Math.sqrt(q11 / scale), l10 = q12 / scale / l00, l11 = Math.sqrt(q22 / scale - l10 * l10), l22 = Math.sqrt(shear / scale);
         // Row r of Lᵀ: (Lᵀε)_0 = l00 ε₀ + l10 ε₁, (Lᵀε)_1 = l11 ε₁, (Lᵀε)_2 = l22 ε₂.
-        double[][] rows = {{l00, l10, 0}, {0, l11, 0}, {0, 0, l22}};
-        for (int r = 0; r < 3; r++) {
-            int i = 3 * t + r;
-            System.arraycopy(rows[r], 0, row, 3 * i, 3);
-            setCompliance(i, 1 / (scale * area[i]));
-        }
+        final int i = 3 * t, k = 3 * i;
+        row[k] = l00; row[k + 1] = l10; row[k + 2] = 0;
+        row[k + 3] = 0; row[k + 4] = l11; row[k + 5] = 0;
+        row[k + 6] = 0; row[k + 7] = 0; row[k + 8] = l22;
+        for (int r = 0; r < 3; r++) setCompliance(i + r, 1 / (scale * area[i + r]));
         materialChanged(); // the rows too, whatever the compliances did
+    }
+
+    /**
+     * Triangle t's right Cauchy–Green tensor C = FᵀF in the material frame, (C_uu, C_vv, C_uv) into out[0..2]
+     * (C = I + 2E). Allocation-free; not for the solver's threads (it uses the block's scratch).
+     */
+    public void rightCauchyGreen(int t, Particles p, double[] out) {
+        System.arraycopy(gram(t, p), 0, out, 0, 3);
     }
 
     /** The triangle's Green strain (E_uu, E_vv, γ) in the material frame. */

@@ -14,7 +14,8 @@ import java.util.List;
  * contacts, so hard contacts have the last word; then the self-collision's {@link CrossingGuard}, if any,
  * cuts back motion that would pass the cloth through itself), update velocities, velocity pass (damping).
  *
- * <p>After a step is kept, bending that yields moves its rest angles ({@link HingePlasticity}).
+ * <p>After a step is kept, what changes the material runs ({@link AfterStep}: bending that yields, stiffness
+ * that follows the strain).
  *
  * <p>Last line of defence: the state is copied before every step (into arrays made once) and checked
  * after it; a step that leaves a non-finite number, or throws, is undone and reported, never kept.
@@ -32,8 +33,8 @@ public final class Simulation {
     private final List<Plane> planes = new ArrayList<>();
     /** The cloth's contacts with itself, or null. */
     private SelfCollision self;
-    /** Bending that yields after each kept step, or null. */
-    private HingePlasticity plasticity;
+    /** What changes the material after each kept step (plasticity, stiffening), in order. */
+    private final List<AfterStep> afterSteps = new ArrayList<>();
     private final ContactSet contacts = new ContactSet();
     private final List<Kinematics> kinematics = new ArrayList<>();
     private final List<ExternalForce> forces = new ArrayList<>();
@@ -149,16 +150,16 @@ public final class Simulation {
         return this;
     }
 
-    /** Makes the hinges of this simulation's dihedral blocks yield (replacing any earlier plasticity); null turns it off. */
-    public Simulation plasticity(HingePlasticity p) {
-        if (p != null && !constraints.cloth().containsAll(p.blocks()))
-            throw new IllegalArgumentException("plasticity was made for blocks this simulation does not hold");
-        plasticity = p;
+    /** Adds what changes the material after each kept step (plasticity, stiffening), run after those added before. */
+    public Simulation add(AfterStep a) {
+        if (a == null) throw new IllegalArgumentException("after-step must not be null, was null");
+        a.check(constraints.cloth());
+        afterSteps.add(a);
         return this;
     }
 
-    /** The bending's plasticity, or null when bending is elastic. */
-    public HingePlasticity plasticity() { return plasticity; }
+    /** What changes the material after each step, in order. */
+    public List<AfterStep> afterSteps() { return Collections.unmodifiableList(afterSteps); }
 
     public Simulation add(Kinematics k) {
         if (k == null) throw new IllegalArgumentException("kinematics must not be null, was null");
@@ -229,7 +230,7 @@ public final class Simulation {
         }
         if (!Metrics.allFinite(particles)) throw diverged(dt);
         // After the step is kept: an undone step must leave the rest angles as they were too.
-        if (plasticity != null) plasticity.flow(particles, dt);
+        for (int a = 0, n = afterSteps.size(); a < n; a++) afterSteps.get(a).afterStep(particles, dt);
     }
 
     /**

@@ -17,8 +17,15 @@ public final class Fabric {
     public final OrthotropicMaterial membrane;
     /** B, N·m per unit width. */
     public final double bendingStiffness;
+    /** The measured stretching beyond small strain, or null (the fabric is the linear membrane alone). */
+    public final StretchingCurve stretchingCurve;
 
     public Fabric(String name, String description, String source, double arealDensity, OrthotropicMaterial membrane, double bendingStiffness) {
+        this(name, description, source, arealDensity, membrane, bendingStiffness, null);
+    }
+
+    public Fabric(String name, String description, String source, double arealDensity, OrthotropicMaterial membrane, double bendingStiffness,
+                  StretchingCurve stretchingCurve) {
         if (name == null) throw new IllegalArgumentException("name must not be null, was null");
         if (membrane == null) throw new IllegalArgumentException("membrane must not be null, was null");
         if (!Double.isNaN(arealDensity) && !(arealDensity > 0 && arealDensity < 1e3))
@@ -31,6 +38,7 @@ public final class Fabric {
         this.arealDensity = arealDensity;
         this.membrane = membrane;
         this.bendingStiffness = bendingStiffness;
+        this.stretchingCurve = stretchingCurve;
     }
 
     @Override public String toString() { return name; }

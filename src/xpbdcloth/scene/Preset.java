@@ -100,9 +100,12 @@ public final class Preset {
         public final boolean tethers;
         /** Bending that yields, or null (elastic). */
         public final PlasticitySpec plasticity;
+        /** Whether the membrane follows the fabric's measured stretching curve (else it is linear, the curve's slope at zero). */
+        public final boolean stiffening;
 
-        FabricSpec(xpbdcloth.fabric.Fabric fabric, double[] warp, boolean tethers, PlasticitySpec plasticity) {
+        FabricSpec(xpbdcloth.fabric.Fabric fabric, double[] warp, boolean tethers, PlasticitySpec plasticity, boolean stiffening) {
             this.fabric = fabric; this.warp = warp == null ? null : warp.clone(); this.tethers = tethers; this.plasticity = plasticity;
+            this.stiffening = stiffening;
         }
     }
 

@@ -524,7 +524,7 @@ public final class PresetLoader {
         Preset.FabricSpec fabric(Node n) {
             List<String> moduli = List.of("name", "warpModulus", "weftModulus", "poisson", "shearModulus", "bendingStiffness");
             Set<String> allowed = new java.util.HashSet<>(moduli);
-            allowed.addAll(Set.of("catalogue", "warp", "tethers", "plasticity"));
+            allowed.addAll(Set.of("catalogue", "warp", "tethers", "plasticity", "stiffening"));
             object(n, allowed);
             Node cat = optional(n, "catalogue");
             Fabric material;
@@ -561,7 +561,11 @@ public final class PresetLoader {
                 object(pl, Set.of("yieldCurvature", "rate"));
                 plasticity = new Preset.PlasticitySpec(number(required(pl, "yieldCurvature"), Limits.YIELD_CURVATURE), number(required(pl, "rate"), Limits.PLASTIC_RATE));
             }
-            return new Preset.FabricSpec(material, warp, t != null && bool(t), plasticity);
+            Node st = optional(n, "stiffening");
+            boolean stiffening = st != null && bool(st);
+            if (stiffening && material.stretchingCurve == null)
+                throw fail(st.path, "needs a measured stretching curve: a catalogue fabric, not moduli of your own (they are a linear membrane)");
+            return new Preset.FabricSpec(material, warp, t != null && bool(t), plasticity, stiffening);
         }
 
         /** The fabric catalogue: a source for all, and per fabric its data-driven sample (see {@link DataDrivenSample}). */
@@ -571,17 +575,23 @@ public final class PresetLoader {
             List<Fabric> out = new ArrayList<>();
             Set<String> names = new java.util.HashSet<>();
             for (Node f : array(required(root, "fabrics"), 1000)) {
-                object(f, Set.of("name", "description", "sample", "arealDensity", "stretching", "bending"));
+                object(f, Set.of("name", "description", "sample", "arealDensity", "stretching", "bending", "stretchingCurve"));
                 Node nm = required(f, "name");
                 String name = string(nm);
                 if (!names.add(name)) throw fail(nm.path, "\"" + name + "\" is listed twice");
                 double density = number(required(f, "arealDensity"), Limits.AREAL_DENSITY);
                 Node st = required(f, "stretching"), bd = required(f, "bending");
                 double[] stretching = numbers(st, 4, Limits.MODULUS.hi), bending = numbers(bd, 3, Limits.BENDING_STIFFNESS.hi);
-                Node d = optional(f, "description");
+                Node d = optional(f, "description"), sc = optional(f, "stretchingCurve");
                 String sample = string(required(f, "sample"));
+                double[][] curve = null;
+                if (sc != null) {
+                    if (!sc.json.isArray() || sc.json.size() != 5) throw fail(sc.path, "must be 5 samples (0°, 22.5°, 45°, 67.5°, 90°) of 4 numbers, was " + describe(sc.json));
+                    curve = new double[5][];
+                    for (int j = 0; j < 5; j++) curve[j] = numbers(new Node(sc.json.get(j), sc.path + "[" + j + "]"), 4, Limits.MODULUS.hi);
+                }
                 try {
-                    out.add(DataDrivenSample.fabric(name, d == null ? "" : string(d), source + ", sample \"" + sample + "\"", density, stretching, bending));
+                    out.add(DataDrivenSample.fabric(name, d == null ? "" : string(d), source + ", sample \"" + sample + "\"", density, stretching, bending, curve));
                 } catch (IllegalArgumentException e) {
                     throw fail(st.path, e.getMessage());
                 }

@@ -6,6 +6,7 @@ import xpbdcloth.engine.HingePlasticity;
 import xpbdcloth.fabric.Fabric;
 import xpbdcloth.fabric.FabricConstraints;
 import xpbdcloth.fabric.FabricSwap;
+import xpbdcloth.fabric.MeasuredStiffening;
 import xpbdcloth.engine.Cloth;
 import xpbdcloth.engine.ClothBuilder;
 import xpbdcloth.engine.MeshClothBuilder;
@@ -46,7 +47,8 @@ public final class Scene {
             for (ConstraintBlock b : FabricConstraints.build(cloth.particles(), cloth.triangles(), warp, f.fabric.membrane, f.fabric.bendingStiffness, f.tethers, f.plasticity != null))
                 simulation.add(b);
             if (f.plasticity != null)
-                simulation.plasticity(new HingePlasticity(simulation.blocks(), cloth.particles(), f.plasticity.yieldCurvature, f.plasticity.rate));
+                simulation.add(new HingePlasticity(simulation.blocks(), cloth.particles(), f.plasticity.yieldCurvature, f.plasticity.rate));
+            if (f.stiffening) simulation.add(new MeasuredStiffening(simulation.blocks(), f.fabric.stretchingCurve));
             fabric = f.fabric;
         }
         if (preset.aerodynamics != null) {
@@ -171,6 +173,8 @@ public final class Scene {
     public void useFabric(Fabric next) {
         if (fabric == null) throw new IllegalArgumentException("fabric: this cloth is springs, not a fabric (its preset has no \"fabric\" block)");
         FabricSwap.apply(simulation.blocks(), cloth.particles(), next);
+        for (xpbdcloth.engine.AfterStep a : simulation.afterSteps())
+            if (a instanceof MeasuredStiffening) ((MeasuredStiffening) a).use(next.stretchingCurve);
         fabric = next;
     }
     public Cloth cloth() { return cloth; }

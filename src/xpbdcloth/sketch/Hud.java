@@ -290,8 +290,9 @@ final class Hud {
 
     /** How the fabric bends: plate patches on a flat rest, dihedral hinges where it is bent or may yield (a crease). */
     static String bendingModel(Simulation sim) {
-        xpbdcloth.engine.HingePlasticity plastic = sim.plasticity();
-        if (plastic != null) return fmt("dihedral hinges yielding past %.3g/m (a crease)", plastic.yieldCurvature());
+        for (xpbdcloth.engine.AfterStep a : sim.afterSteps())
+            if (a instanceof xpbdcloth.engine.HingePlasticity)
+                return fmt("dihedral hinges yielding past %.3g/m (a crease)", ((xpbdcloth.engine.HingePlasticity) a).yieldCurvature());
         for (xpbdcloth.engine.ConstraintBlock b : sim.blocks())
             if (b instanceof xpbdcloth.engine.DihedralBlock) return "dihedral hinges (a bent rest)";
         return "the plate's on every triangle";

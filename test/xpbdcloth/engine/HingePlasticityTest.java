@@ -34,7 +34,7 @@ class HingePlasticityTest {
         d.addAtCurrentShape(p, 0, 1, 2, 3, 1e-5);
         Simulation sim = new Simulation(p, new SolverSettings().withMode(ConstraintMode.XPBD).withIterations(2).withSubsteps(2).withTimestep(0.01));
         sim.add(d);
-        sim.plasticity(new HingePlasticity(sim.blocks(), p, yieldCurvature, rate));
+        sim.add(new HingePlasticity(sim.blocks(), p, yieldCurvature, rate));
         for (int i = 0; i < 4; i++) p.pin(i);
         return sim;
     }
@@ -47,7 +47,7 @@ class HingePlasticityTest {
             Particles p = hinge();
             Simulation sim = held(p, 20, 3);
             // w = (A₀ + A₁)/|e| = (2 · ½ · 0.1 · 0.05)/0.1 = 0.05 m, so θ_y = 20 · 0.05 = 1 rad, below both bends.
-            double yield = sim.plasticity().yieldAngle(0, 0);
+            double yield = ((HingePlasticity) sim.afterSteps().get(0)).yieldAngle(0, 0);
             assertEquals(1.0, yield, 1e-12);
             bend(p, theta);
             assertEquals(theta, ((DihedralBlock) sim.blocks().get(0)).angle(0, p), 1e-12);
@@ -105,6 +105,6 @@ class HingePlasticityTest {
         assertTrue(assertThrows(IllegalArgumentException.class, () -> new HingePlasticity(blocks, p, 1, -1)).getMessage().contains("rate"));
         assertTrue(assertThrows(IllegalArgumentException.class, () -> new HingePlasticity(List.of(), p, 1, 1)).getMessage().contains("no dihedral hinge"));
         Simulation other = new Simulation(p, new SolverSettings());
-        assertTrue(assertThrows(IllegalArgumentException.class, () -> other.plasticity(new HingePlasticity(blocks, p, 1, 1))).getMessage().contains("does not hold"));
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> other.add(new HingePlasticity(blocks, p, 1, 1))).getMessage().contains("does not hold"));
     }
 }

@@ -31,7 +31,7 @@ class CreaseTest {
                 .withTimestep(0.01).withGravity(0, 0, 0).withDamping(5));
         double[] up = {1, 0, 0};
         for (ConstraintBlock b : FabricConstraints.build(p, strip.triangles(), up, FabricConstraintMathsTest.FABRIC, 1e-3, false, true)) sim.add(b);
-        sim.plasticity(new HingePlasticity(sim.blocks(), p, yieldCurvature, rate));
+        sim.add(new HingePlasticity(sim.blocks(), p, yieldCurvature, rate));
         // Fold: the strip's centre line turns by π/FOLDED at each of FOLDED columns in its middle, about lines along z.
         int first = (COLUMNS - FOLDED) / 2;
         double heading = 0, x = 0, y = 0;

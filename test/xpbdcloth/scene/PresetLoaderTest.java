@@ -105,7 +105,7 @@ class PresetLoaderTest {
         Scene scene = Scene.of(PresetLoader.parse("p.json", fabric(plastic)));
         // 4 × 4: 18 triangles (3 membrane rows each) and 21 interior edges (33 edges less the 12 on the border).
         assertEquals(18 * 3 + 21, scene.simulation().constraintCount());
-        assertEquals(15, scene.simulation().plasticity().yieldCurvature());
+        assertEquals(15, ((xpbdcloth.engine.HingePlasticity) scene.simulation().afterSteps().get(0)).yieldCurvature());
         PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse("p.json", fabric(plastic.replace("\"yieldCurvature\": 15", "\"yieldCurvature\": 0"))));
         assertEquals("fabric.plasticity.yieldCurvature", e.field());
         e = assertThrows(PresetException.class, () -> PresetLoader.parse("p.json", fabric(plastic.replace("\"rate\": 2", "\"rate\": -1"))));
@@ -114,6 +114,16 @@ class PresetLoaderTest {
         assertTrue(e.getMessage().contains("yieldAngle"), e.getMessage());
         e = assertThrows(PresetException.class, () -> PresetLoader.parse("p.json", fabric(plastic.replace(", \"rate\": 2", ""))));
         assertEquals("fabric.plasticity.rate", e.field());
+    }
+
+    /** The measured curve is a catalogue fabric's: moduli of one's own have none, and asking for it is named. */
+    @Test
+    void stiffeningNeedsAMeasuredCurve() {
+        PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse("s.json", fabric(COTTONISH + ", \"stiffening\": true")));
+        assertEquals("fabric.stiffening", e.field());
+        String denim = fabric("\"catalogue\": \"denim\", \"warp\": [1, 0, 0], \"stiffening\": true").replace(" \"arealDensity\": 0.2,", "");
+        Scene scene = Scene.of(PresetLoader.parse("d.json", denim));
+        assertTrue(scene.simulation().afterSteps().get(0) instanceof xpbdcloth.fabric.MeasuredStiffening);
     }
 
     /**

@@ -31,6 +31,7 @@ public final class Experiments implements Callable<Integer> {
         e.add(new TautCurtain());
         e.add(new MultigridOnTriangles());
         e.add(new SolverChoice());
+        e.add(new MeasuredStretching());
         return e;
     }
 

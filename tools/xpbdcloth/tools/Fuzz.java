@@ -335,7 +335,7 @@ public final class Fuzz implements Callable<Integer> {
             boolean hinges = false;
             for (xpbdcloth.engine.ConstraintBlock b : sim.blocks()) hinges |= b instanceof xpbdcloth.engine.DihedralBlock;
             if (yielding && hinges)
-                sim.plasticity(new xpbdcloth.engine.HingePlasticity(sim.blocks(), cloth.particles(), logUniform(own, 0.1, 1e4), logUniform(own, 1e-4, 1e4)));
+                sim.add(new xpbdcloth.engine.HingePlasticity(sim.blocks(), cloth.particles(), logUniform(own, 0.1, 1e4), logUniform(own, 1e-4, 1e4)));
         }
         if (area && r.nextInt(4) == 0) {
             xpbdcloth.engine.Aerodynamics air = new xpbdcloth.engine.Aerodynamics(triangles, logUniform(r, 1e-3, 1e3), 10 * r.nextDouble(), 10 * r.nextDouble());

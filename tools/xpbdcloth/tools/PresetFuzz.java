@@ -19,7 +19,7 @@ import xpbdcloth.scene.Scene;
  *
  * <p>Every field the loader accepts is drawn (a test holds the fuzzer to the loader's own list of fields):
  * grids and the two shipped meshes (placed, welded, pinned by index, group or box), spring families or a
- * fabric (its moduli or a catalogue name, warp, tethers), every solver, spheres and colliders of every
+ * fabric (its moduli or a catalogue name, warp, tethers, plasticity, a catalogue fabric's stiffening), every solver, spheres and colliders of every
  * kind, pin motions, wind, aerodynamics and self-collision.
  *
  * <p>What is not drawn jointly: a case's work (particles × iterations × substeps × steps) is held under
@@ -222,9 +222,11 @@ final class PresetFuzz {
                         .append(", \"bendingStiffness\": ").append(num(draw(Limits.BENDING_STIFFNESS, true)));
                 }
                 json.append(", \"warp\": [1, 0, 0], \"tethers\": ").append(r.nextBoolean());
-                // Bending that yields in one fabric of two, drawn from a stream of its own (the preset so far) so that
-                // the case's other draws stay what they were.
+                // Bending that yields in one fabric of two, and a catalogue fabric's measured stretching, drawn from a
+                // stream of its own (the preset so far) so that the case's other draws stay what they were.
                 Random own = new Random(json.toString().hashCode());
+                // A catalogue fabric follows its measured stretching curve in one case of two.
+                if (catalogue && own.nextBoolean()) json.append(", \"stiffening\": true");
                 if (own.nextBoolean())
                     json.append(", \"plasticity\": { \"yieldCurvature\": ").append(num(logUniform(own, Limits.YIELD_CURVATURE)))
                         .append(", \"rate\": ").append(num(logUniform(own, Limits.PLASTIC_RATE))).append(" }");
