@@ -229,7 +229,7 @@ public final class Simulation {
             throw new SimulationDivergedException(stepCount + 1, failed);
         }
         if (!Metrics.allFinite(particles)) throw diverged(dt);
-        // After the step is kept: an undone step must leave the rest angles as they were too.
+        // Only after the step is kept: an undone step must leave the material (rest angles, stiffnesses) as it was.
         for (int a = 0, n = afterSteps.size(); a < n; a++) afterSteps.get(a).afterStep(particles, dt);
     }
 

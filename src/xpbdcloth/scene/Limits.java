@@ -66,11 +66,11 @@ public final class Limits {
     public static final Range MODULUS = new Range(1e-1, 1e7, "N/m");
     /** A fabric's bending stiffness per unit width, N·m (Kawabata's B of 0.01 gf·cm²/cm is 1e-6). */
     public static final Range BENDING_STIFFNESS = new Range(1e-6, 1, "N·m");
-    /** Poisson's ratio ν₁₂ before the positive-definite check. */
     /** A crease's yield: from a 10 m bend (barely one) to a 0.1 mm radius. */
     public static final Range YIELD_CURVATURE = new Range(0.1, 1e4, "1/m");
     /** How fast a yielded hinge's rest follows: an hour's creep to instant. */
     public static final Range PLASTIC_RATE = new Range(1e-4, 1e4, "1/s");
+    /** Poisson's ratio ν₁₂ before the positive-definite check. */
     public static final Range POISSON = new Range(-0.99, 10, "");
     /** Air's density, kg/m³ (water would be 1000). */
     public static final Range AIR_DENSITY = new Range(1e-3, 1e3, "kg/m³");
