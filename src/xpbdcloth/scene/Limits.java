@@ -88,6 +88,8 @@ public final class Limits {
     public static final Range DISPLACEMENT = new Range(-100, 100, "m");
     public static final Range FREQUENCY = new Range(0, 100, "Hz");
     public static final Range START_TIME = new Range(0, 1e6, "s");
+    /** A pin motion's turns about its axis (either way). */
+    public static final Range TURNS = new Range(-100, 100, "turns");
     public static final Range DURATION = new Range(1e-2, 1e6, "s");
     /** Each component of the wind, m/s (a hurricane is 33 m/s and up). */
     public static final Range WIND_SPEED = new Range(-100, 100, "m/s");

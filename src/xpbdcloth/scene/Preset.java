@@ -266,11 +266,16 @@ public final class Preset {
     /** A pinned particle (vertex index) moved by displacement (m) over [start, start + duration] s, eased, then held. */
     public static final class PinMotion {
         public final int vertex;
+        /** m (zeros when the motion only turns). */
         public final double[] displacement;
         public final double start, duration;
+        /** The turn: a unit axis and a centre (m) it passes through, and its angle (rad, 0 for none). */
+        public final double[] axis, centre;
+        public final double angle;
 
-        PinMotion(int vertex, double[] displacement, double start, double duration) {
+        PinMotion(int vertex, double[] displacement, double start, double duration, double[] axis, double[] centre, double angle) {
             this.vertex = vertex; this.displacement = displacement; this.start = start; this.duration = duration;
+            this.axis = axis; this.centre = centre; this.angle = angle;
         }
     }
 

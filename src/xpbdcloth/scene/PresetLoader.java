@@ -381,7 +381,7 @@ public final class PresetLoader {
             Preset.SelfCollisionSpec self = sc == null ? null : selfCollision(sc, cloth);
             List<Preset.PinMotion> motions = new ArrayList<>();
             Node ms = optional(root, "pinMotions");
-            if (ms != null) for (Node m : array(ms, Limits.MAX_PIN_MOTIONS)) motions.add(pinMotion(m, cloth));
+            if (ms != null) for (Node m : array(ms, Limits.MAX_PIN_MOTIONS)) motions.addAll(pinMotions(m, cloth));
             Node w = optional(root, "wind");
             long particles = cloth.mesh != null ? cloth.mesh.vertexCount() : (long) cloth.columns * cloth.rows;
             String tooMuch = Limits.workProblem(particles, solver.iterations(), solver.substeps(), colliders, solver.solver().isGlobal());
@@ -842,25 +842,44 @@ public final class PresetLoader {
             }
         }
 
-        Preset.PinMotion pinMotion(Node n, Preset.Cloth cloth) {
-            object(n, Set.of("pin", "displacement", "start", "duration"));
+        /**
+         * A pin motion: a displacement, a turn ({@code "rotation": {"axis", "centre", "turns"}}), or both, of one
+         * pinned particle, or of every particle of a grid's named edge (each must be pinned).
+         */
+        List<Preset.PinMotion> pinMotions(Node n, Preset.Cloth cloth) {
+            object(n, Set.of("pin", "displacement", "rotation", "start", "duration"));
             Node pn = required(n, "pin");
-            int vertex;
+            List<Integer> vertices = new ArrayList<>();
             if (cloth.isMesh()) {
-                vertex = vertexIndex(pn, cloth.mesh);
+                int vertex = vertexIndex(pn, cloth.mesh);
                 if (Arrays.binarySearch(cloth.pinnedVertices, vertex) < 0) throw fail(pn.path, "vertex " + vertex + " must also be pinned by cloth.pins");
+                vertices.add(vertex);
             } else {
-                List<int[]> named = pinned(pn, cloth.columns, cloth.rows);
-                if (named.size() != 1) throw fail(pn.path, "must name one particle ([row, col] or a corner), was \"" + pn.json.asText() + "\"");
-                int[] pin = named.get(0);
-                boolean pinned = false;
-                for (int[] p : cloth.pins) pinned |= p[0] == pin[0] && p[1] == pin[1];
-                if (!pinned) throw fail(n.child("pin"), "particle [" + pin[0] + ", " + pin[1] + "] must also be listed in cloth.pins");
-                vertex = cloth.vertex(pin[0], pin[1]);
+                for (int[] pin : pinned(pn, cloth.columns, cloth.rows)) {
+                    boolean pinned = false;
+                    for (int[] p : cloth.pins) pinned |= p[0] == pin[0] && p[1] == pin[1];
+                    if (!pinned) throw fail(n.child("pin"), "particle [" + pin[0] + ", " + pin[1] + "] must also be listed in cloth.pins");
+                    vertices.add(cloth.vertex(pin[0], pin[1]));
+                }
             }
-            Node s = optional(n, "start");
-            return new Preset.PinMotion(vertex, vector(required(n, "displacement"), Limits.DISPLACEMENT), s == null ? 0 : number(s, Limits.START_TIME),
-                    number(required(n, "duration"), Limits.DURATION));
+            Node s = optional(n, "start"), dn = optional(n, "displacement"), rn = optional(n, "rotation");
+            if (dn == null && rn == null) throw fail(n.path, "must give a displacement, a rotation or both");
+            double[] displacement = dn == null ? new double[3] : vector(dn, Limits.DISPLACEMENT), axis = null, centre = null;
+            double angle = 0;
+            if (rn != null) {
+                object(rn, Set.of("axis", "centre", "turns"));
+                Node an = required(rn, "axis");
+                axis = vector(an, Limits.NORMAL);
+                double length = Math.sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+                if (length < 1e-3) throw fail(an.path, "must be a direction (length at least 1e-3), was " + Arrays.toString(axis));
+                for (int k = 0; k < 3; k++) axis[k] /= length;
+                centre = vector(required(rn, "centre"), Limits.POSITION);
+                angle = 2 * Math.PI * number(required(rn, "turns"), Limits.TURNS);
+            }
+            double start = s == null ? 0 : number(s, Limits.START_TIME), duration = number(required(n, "duration"), Limits.DURATION);
+            List<Preset.PinMotion> out = new ArrayList<>();
+            for (int v : vertices) out.add(new Preset.PinMotion(v, displacement, start, duration, axis, centre, angle));
+            return out;
         }
 
         Preset.WindSpec wind(Node n) {

@@ -81,20 +81,9 @@ public final class Scene {
             simulation.add(sphere);
         }
 
-        int n = preset.pinMotions.size();
         double end = 0;
-        if (n > 0) {
-            int[] ids = new int[n];
-            double[][] d = new double[n][];
-            double[] start = new double[n], duration = new double[n];
-            for (int j = 0; j < n; j++) {
-                Preset.PinMotion m = preset.pinMotions.get(j);
-                ids[j] = m.vertex;
-                d[j] = m.displacement;
-                start[j] = m.start;
-                duration[j] = m.duration;
-            }
-            PinScript script = new PinScript(cloth.particles(), ids, d, start, duration);
+        if (!preset.pinMotions.isEmpty()) {
+            PinScript script = new PinScript(cloth.particles(), preset.pinMotions);
             simulation.add(script);
             end = script.endTime();
         }

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.*;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import xpbdcloth.engine.Particles;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -297,14 +298,45 @@ class PresetLoaderTest {
         for (int r = 1; r < 4; r++) assertArrayEquals(new int[] {r, 0}, p.cloth.pins.get(3 + r));
     }
 
-    /** A pin motion moves one particle, so an edge name is refused there with its reason. */
+    /** A pin motion on an edge moves every particle of it, and each must be pinned: one that is not is named. */
     @Test
-    void pinMotionNeedsOneParticle() {
+    void pinMotionOnAnEdgeNeedsTheWholeEdgePinned() {
         String text = valid().replace("\"dt\": 0.02 } }",
                 "\"dt\": 0.02 }, \"pinMotions\": [{ \"pin\": \"top-edge\", \"displacement\": [0, 0, 0], \"start\": 0, \"duration\": 1 }] }");
         PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse("bad.json", text));
         assertEquals("pinMotions[0].pin", e.field(), e.getMessage());
-        assertTrue(e.problem().startsWith("must name one particle"), e.getMessage());
+        assertTrue(e.problem().contains("[0, 1] must also be listed in cloth.pins"), e.getMessage());
+    }
+
+    /**
+     * A held edge turned a quarter turn about the vertical through the origin and raised 10 cm ends where the
+     * rotation matrix puts it, every particle of it; a motion with neither a displacement nor a rotation, a zero
+     * axis and turns out of range are named.
+     */
+    @Test
+    void pinMotionsTurnAndMoveWholeEdges() {
+        String motion = "{ \"pin\": \"left-edge\", \"rotation\": { \"axis\": [0, 0.5, 0], \"centre\": [0, 0, 0], \"turns\": 0.25 },"
+                + " \"displacement\": [0, 0.1, 0], \"start\": 0, \"duration\": 1 }";
+        String text = valid().replace("\"pins\": [\"top-left\"]", "\"pins\": [\"left-edge\"]").replace("\"dt\": 0.02 } }", "\"dt\": 0.02 }, \"pinMotions\": [" + motion + "] }");
+        Scene scene = Scene.of(PresetLoader.parse("turn.json", text));
+        Particles p = scene.simulation().particles();
+        double[][] before = new double[4][];
+        for (int r = 0; r < 4; r++) { int i = scene.cloth().index(r, 0); before[r] = new double[] {p.x(i), p.y(i), p.z(i)}; }
+        for (int s = 0; s < 60; s++) scene.simulation().step();
+        for (int r = 0; r < 4; r++) {
+            int i = scene.cloth().index(r, 0);
+            // R_y(90°): (x, y, z) → (z, y, −x), then up by 0.1.
+            assertEquals(before[r][2], p.x(i), 1e-12, "row " + r);
+            assertEquals(before[r][1] + 0.1, p.y(i), 1e-12, "row " + r);
+            assertEquals(-before[r][0], p.z(i), 1e-12, "row " + r);
+        }
+        PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse("t.json", text.replace(" \"displacement\": [0, 0.1, 0],", "")
+                .replace("\"rotation\": { \"axis\": [0, 0.5, 0], \"centre\": [0, 0, 0], \"turns\": 0.25 },", "")));
+        assertEquals("pinMotions[0]", e.field(), e.getMessage());
+        e = assertThrows(PresetException.class, () -> PresetLoader.parse("t.json", text.replace("[0, 0.5, 0]", "[0, 0, 0]")));
+        assertEquals("pinMotions[0].rotation.axis", e.field(), e.getMessage());
+        e = assertThrows(PresetException.class, () -> PresetLoader.parse("t.json", text.replace("\"turns\": 0.25", "\"turns\": 1000")));
+        assertEquals("pinMotions[0].rotation.turns", e.field(), e.getMessage());
     }
 
     @ParameterizedTest(name = "{0}")
@@ -362,6 +394,10 @@ class PresetLoaderTest {
                 assertEquals(f.getFileName().toString().replace(".json", ""), p.name, "file name matches preset name");
             }).count();
             assertEquals(PresetLoader.BUILT_IN.size(), n, "every preset in data/ is built in");
+        }
+        // The stress tests beside them (opened by path) load too.
+        try (var files = Files.list(Path.of("data", "stress"))) {
+            assertTrue(files.filter(f -> f.toString().endsWith(".json")).peek(f -> Scene.of(PresetLoader.load(f))).count() > 0);
         }
     }
 }

@@ -20,7 +20,7 @@ import xpbdcloth.scene.Scene;
  * <p>Every field the loader accepts is drawn (a test holds the fuzzer to the loader's own list of fields):
  * grids and the two shipped meshes (placed, welded, pinned by index, group or box), spring families or a
  * fabric (its moduli or a catalogue name, warp, tethers, plasticity, a catalogue fabric's stiffening), every solver, spheres and colliders of every
- * kind, pin motions, wind, aerodynamics and self-collision.
+ * kind, pin motions (moves and turns), wind, aerodynamics and self-collision.
  *
  * <p>What is not drawn jointly: a case's work (particles × iterations × substeps × steps) is held under
  * a budget so a case costs a fraction of a second, so the largest cloths run with few sweeps and the
@@ -307,8 +307,16 @@ final class PresetFuzz {
                 json.append("]");
             }
             if (!corners.isEmpty() && r.nextBoolean()) {
-                json.append(", \"pinMotions\": [{ \"pin\": ").append(corners.get(0)).append(", \"displacement\": ").append(vec(Limits.DISPLACEMENT))
-                    .append(", \"start\": ").append(num(r.nextInt(4) == 0 ? 0 : draw(Limits.START_TIME, true) * 1e-6))
+                json.append(", \"pinMotions\": [{ \"pin\": ").append(corners.get(0)).append(", \"displacement\": ").append(vec(Limits.DISPLACEMENT));
+                // A turn in one motion of two, from a stream of its own (the preset so far) so the other draws stay.
+                Random own = new Random(json.toString().hashCode());
+                if (own.nextBoolean()) {
+                    double turns = Limits.TURNS.lo + own.nextDouble() * (Limits.TURNS.hi - Limits.TURNS.lo);
+                    json.append(", \"rotation\": { \"axis\": [").append(num(own.nextDouble() - 0.5)).append(", ").append(num(0.5 + 0.5 * own.nextDouble()))
+                        .append(", ").append(num(own.nextDouble() - 0.5)).append("], \"centre\": [").append(num(own.nextGaussian())).append(", ")
+                        .append(num(own.nextGaussian())).append(", ").append(num(own.nextGaussian())).append("], \"turns\": ").append(num(turns)).append(" }");
+                }
+                json.append(", \"start\": ").append(num(r.nextInt(4) == 0 ? 0 : draw(Limits.START_TIME, true) * 1e-6))
                     .append(", \"duration\": ").append(num(draw(Limits.DURATION, true))).append(" }]");
             }
             if (r.nextBoolean()) {
