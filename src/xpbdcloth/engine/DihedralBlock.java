@@ -67,7 +67,7 @@ public final class DihedralBlock extends ConstraintBlock {
     public double restAngle(int i) { return restAngle[i]; }
 
     /** The signed dihedral angle θ of constraint i, rad. */
-    public double angle(int i, Particles p) { return angleAndGradient(i, p.x, scratch.get()); }
+    public double angle(int i, Particles p) { return angleAndGradient(i, p.x, null); }
 
     private static double crossLength(double[] x, int o, int a, int b) {
         double ux = x[3 * o] - x[3 * a], uy = x[3 * o + 1] - x[3 * a + 1], uz = x[3 * o + 2] - x[3 * a + 2];
@@ -82,8 +82,8 @@ public final class DihedralBlock extends ConstraintBlock {
     }
 
     /**
-     * θ of constraint i, and ∇θ into g[0..11] (p₀, p₁, p₂, p₃); NaN (and g untouched) when a triangle
-     * has no normal.
+     * θ of constraint i, and ∇θ into g[0..11] (p₀, p₁, p₂, p₃) unless g is null; NaN (and g untouched)
+     * when a triangle has no normal.
      */
     double angleAndGradient(int i, double[] x, double[] g) {
         final int a = 3 * particles[4 * i], b = 3 * particles[4 * i + 1], c = 3 * particles[4 * i + 2], d = 3 * particles[4 * i + 3];
@@ -104,6 +104,7 @@ public final class DihedralBlock extends ConstraintBlock {
         double cx = n0y * n1z - n0z * n1y, cy = n0z * n1x - n0x * n1z, cz = n0x * n1y - n0y * n1x;
         double sin = (cx * ex + cy * ey + cz * ez) / (n0l * n1l * el);
         double theta = Math.atan2(sin, cos);
+        if (g == null) return theta;
         double k0 = -el / n0sq, k1 = -el / n1sq;
         double s0 = (ax * ex + ay * ey + az * ez) / el2, s1 = (b2x * ex + b2y * ey + b2z * ez) / el2;
         g[0] = k0 * n0x; g[1] = k0 * n0y; g[2] = k0 * n0z;

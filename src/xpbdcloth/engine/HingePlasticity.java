@@ -30,8 +30,6 @@ public final class HingePlasticity implements AfterStep {
     /** θ_y per hinge of each block, rad. */
     private final double[][] yieldAngle;
     private final double yieldCurvature, rate;
-    /** The gradient's scratch, which the angle's routine fills too. */
-    private final double[] scratch = new double[12];
 
     /**
      * @param blocks         a simulation's blocks; its {@link DihedralBlock}s yield (the others are not touched)
@@ -84,7 +82,7 @@ public final class HingePlasticity implements AfterStep {
             final DihedralBlock d = blocks[k];
             final double[] rest = d.restAngle, yield = yieldAngle[k];
             for (int i = 0, n = d.count(); i < n; i++) {
-                double theta = d.angleAndGradient(i, p.x, scratch);
+                double theta = d.angleAndGradient(i, p.x, null);
                 if (Double.isNaN(theta)) continue;
                 double c = d.wrapped(i, theta), over = Math.abs(c) - yield[i];
                 if (over <= 0) continue;

@@ -97,7 +97,7 @@ public final class MembraneBlock extends ConstraintBlock {
 
     /**
      * Gives triangle t the plane-stress stiffness Q (N/m) = [[q11, q12, 0], [q12, q22, 0], [0, 0, shear]] for
-     * ε = (E_uu, E_vv, γ); positive definite (q11, q22, shear > 0, q12² < q11·q22). Allocation-free, for a
+     * ε = (E_uu, E_vv, γ); positive definite (q11, q22, shear > 0, q12² &lt; q11·q22). Allocation-free, for a
      * stiffness that follows the strain ({@code MeasuredStiffening}).
      */
     public void setStiffness(int t, double q11, double q12, double q22, double shear) {

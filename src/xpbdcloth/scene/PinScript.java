@@ -1,6 +1,8 @@
 package xpbdcloth.scene;
 
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import xpbdcloth.engine.Kinematics;
 import xpbdcloth.engine.Particles;
 
@@ -19,6 +21,9 @@ final class PinScript implements Kinematics {
     private final Preset.PinMotion[] motions;
     /** Each motion's particle's rest place (the same for a particle's every motion). */
     private final double[] base;
+    /** The next motion of the same particle after motion j, or −1; the first motion of a particle is where its chain starts. */
+    private final int[] nextOfSameParticle;
+    private final boolean[] firstOfItsParticle;
 
     PinScript(Particles p, List<Preset.PinMotion> motions) {
         this.motions = motions.toArray(new Preset.PinMotion[0]);
@@ -29,15 +34,23 @@ final class PinScript implements Kinematics {
             base[3 * j + 1] = p.y(i);
             base[3 * j + 2] = p.z(i);
         }
+        nextOfSameParticle = new int[this.motions.length];
+        firstOfItsParticle = new boolean[this.motions.length];
+        Map<Integer, Integer> lastOfParticle = new HashMap<>();
+        for (int j = 0; j < this.motions.length; j++) {
+            nextOfSameParticle[j] = -1;
+            Integer last = lastOfParticle.put(this.motions[j].vertex, j);
+            if (last == null) firstOfItsParticle[j] = true;
+            else nextOfSameParticle[last] = j;
+        }
     }
 
     @Override public void apply(Particles p, double t) {
         for (int j = 0; j < motions.length; j++) {
-            if (firstMotionOf(j) != j) continue; // handled with the particle's first motion
+            if (!firstOfItsParticle[j]) continue; // applied along the particle's chain from its first motion
             double px = base[3 * j], py = base[3 * j + 1], pz = base[3 * j + 2];
-            for (int k = j; k < motions.length; k++) {
+            for (int k = j; k >= 0; k = nextOfSameParticle[k]) {
                 Preset.PinMotion m = motions[k];
-                if (m.vertex != motions[j].vertex) continue;
                 double u = Math.max(0, Math.min(1, (t - m.start) / m.duration));
                 double s = u * u * (3 - 2 * u);
                 if (m.angle != 0) {
@@ -54,11 +67,6 @@ final class PinScript implements Kinematics {
             }
             p.moveKinematic(motions[j].vertex, px, py, pz);
         }
-    }
-
-    private int firstMotionOf(int j) {
-        for (int k = 0; k < j; k++) if (motions[k].vertex == motions[j].vertex) return k;
-        return j;
     }
 
     /** The time after which every pin holds still. */

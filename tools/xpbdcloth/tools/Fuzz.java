@@ -309,7 +309,8 @@ public final class Fuzz implements Callable<Integer> {
 
     /**
      * What the engine has beyond springs and solids, each in one case of four: a measured-fabric membrane
-     * with its bending (on a cloth with triangles), aerodynamic drag and lift, self-collision, and a fixed
+     * with its bending (on a cloth with triangles; in one of two yielding, in one of two stiffening as a
+     * catalogue fabric's measured curve), aerodynamic drag and lift, self-collision, and a fixed
      * plane (a floor, tilted); the ranges are the presets' ({@link xpbdcloth.scene.Limits}). Returns the
      * fastest they drive the cloth: the air's speed, a floor's push-out speed.
      */
@@ -336,6 +337,12 @@ public final class Fuzz implements Callable<Integer> {
             for (xpbdcloth.engine.ConstraintBlock b : sim.blocks()) hinges |= b instanceof xpbdcloth.engine.DihedralBlock;
             if (yielding && hinges)
                 sim.add(new xpbdcloth.engine.HingePlasticity(sim.blocks(), cloth.particles(), logUniform(own, 0.1, 1e4), logUniform(own, 1e-4, 1e4)));
+            // A measured fabric's stiffening in one of two, from the same stream.
+            if (own.nextBoolean()) {
+                java.util.List<xpbdcloth.fabric.Fabric> catalogue = xpbdcloth.scene.FabricCatalogue.all();
+                xpbdcloth.fabric.StretchingCurve curve = catalogue.get(own.nextInt(catalogue.size())).stretchingCurve;
+                if (curve != null) sim.add(new xpbdcloth.fabric.MeasuredStiffening(sim.blocks(), curve));
+            }
         }
         if (area && r.nextInt(4) == 0) {
             xpbdcloth.engine.Aerodynamics air = new xpbdcloth.engine.Aerodynamics(triangles, logUniform(r, 1e-3, 1e3), 10 * r.nextDouble(), 10 * r.nextDouble());

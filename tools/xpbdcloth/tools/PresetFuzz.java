@@ -126,7 +126,7 @@ final class PresetFuzz {
         /** As {@link #draw} on a log scale, from another stream. */
         static double logUniform(Random own, Limits.Range range) {
             if (own.nextInt(4) == 0) return own.nextBoolean() ? range.lo : range.hi;
-            return Math.exp(Math.log(range.lo) + own.nextDouble() * (Math.log(range.hi) - Math.log(range.lo)));
+            return Fuzz.logUniform(own, range.lo, range.hi);
         }
 
         String num(double v) { return Double.toString(v); }
