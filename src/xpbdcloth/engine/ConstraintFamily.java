@@ -17,5 +17,7 @@ public enum ConstraintFamily {
     /** Contacts with colliders and between the cloth's layers: always hard (k = 1, α = 0). */
     COLLISION,
     /** A particle held at a target point, e.g. by the mouse. */
-    ATTACHMENT
+    ATTACHMENT,
+    /** The gas, or the held volume, inside a closed cloth ({@link EnclosedGas}): one row over the whole surface. */
+    PRESSURE
 }

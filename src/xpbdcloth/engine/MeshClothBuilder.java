@@ -81,7 +81,7 @@ public final class MeshClothBuilder {
     }
 
     static ConstraintFamily checkedFamily(ConstraintFamily family) {
-        if (family == null || family == ConstraintFamily.COLLISION || family == ConstraintFamily.ATTACHMENT)
+        if (family != ConstraintFamily.STRUCTURAL && family != ConstraintFamily.SHEAR && family != ConstraintFamily.BEND)
             throw new IllegalArgumentException("family must be STRUCTURAL, SHEAR or BEND, was " + family);
         return family;
     }

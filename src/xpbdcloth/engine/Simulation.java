@@ -10,8 +10,8 @@ import java.util.List;
  * <p>{@code step(dt)} gathers external forces once and runs, for each of s substeps of h = dt/s (Macklin et
  * al. 2019, "Small Steps"), the stages of {@link Stage} in order, each one call in {@link #run}: predict,
  * kinematics (scripts and colliders move to the substep's end, attachment targets glide their share),
- * collide, solve (λ = 0 once per substep, then n sweeps or global iterations, each ending with the
- * contacts, so hard contacts have the last word; then the self-collision's {@link CrossingGuard}, if any,
+ * collide, solve (λ = 0 and each enclosed gas linearised once per substep, then n sweeps or global
+ * iterations, each ending with the gases and then the contacts, so hard contacts have the last word; then the self-collision's {@link CrossingGuard}, if any,
  * cuts back motion that would pass the cloth through itself), update velocities, velocity pass (damping).
  *
  * <p>After a step is kept, what changes the material runs ({@link AfterStep}: bending that yields, stiffness
@@ -36,6 +36,7 @@ public final class Simulation {
     /** What changes the material after each kept step (plasticity, stiffening), in order. */
     private final List<AfterStep> afterSteps = new ArrayList<>();
     private final ContactSet contacts = new ContactSet();
+    private final EnclosedGases gases = new EnclosedGases();
     private final List<Kinematics> kinematics = new ArrayList<>();
     private final List<ExternalForce> forces = new ArrayList<>();
     private final SolverContext ctx = new SolverContext();
@@ -55,7 +56,7 @@ public final class Simulation {
         this.particles = particles;
         this.settings = settings;
         this.constraints = new ConstraintSet(particles.count());
-        this.stages = new SolveStages(constraints, particles, ctx, contacts);
+        this.stages = new SolveStages(constraints, particles, ctx, gases, contacts);
         this.profile = new StepProfile(contacts, particles, stages);
         this.snapshot = new StepSnapshot(particles.count());
         this.prediction = new double[3 * particles.count()];
@@ -149,6 +150,27 @@ public final class Simulation {
         self = s;
         return this;
     }
+
+    /** Adds a gas (or a held volume) inside a closed surface of this simulation's particles. */
+    public Simulation add(EnclosedGas gas) {
+        if (gas == null) throw new IllegalArgumentException("gas must not be null, was null");
+        for (int i : gas.particles())
+            if (i >= particles.count()) throw new IllegalArgumentException("gas surface particle must be within [0, " + particles.count() + "), was " + i);
+        gases.add(gas);
+        return this;
+    }
+
+    /** Lets a gas out (the surface is free again); false if it was not here. */
+    public boolean remove(EnclosedGas gas) { return gases.remove(gas); }
+
+    /**
+     * The solver the last step ran: the settings', except vertex block descent on a cloth with a gas, which
+     * Gauss–Seidel solves ({@link EnclosedGas}); null before the first step.
+     */
+    public SolverType solverInUse() { return stages.inUse(); }
+
+    /** The enclosed gases and held volumes, in the order added. */
+    public List<EnclosedGas> gases() { return gases.view(); }
 
     /** Adds what changes the material after each kept step (plasticity, stiffening), run after those added before. */
     public Simulation add(AfterStep a) {
@@ -269,6 +291,7 @@ public final class Simulation {
             observer.after(Stage.COLLIDE);
             for (int b = 0, nb = cloth.size(); b < nb; b++) cloth.get(b).beginSubstep(ctx);
             attachments.beginSubstep(ctx);
+            gases.beginSubstep(particles, h);
             sweepListener.afterSweep(s, -1);
             long s0 = System.nanoTime();
             solveStage.solve(s, iterations, probe);

@@ -14,6 +14,7 @@ final class SolveStages {
     private final ConstraintSet constraints;
     private final Particles particles;
     private final SolverContext ctx;
+    private final EnclosedGases gases;
     private final ContactSet contacts;
     private Colouring clothColouring;
     private long clothColouringVersion = -1;
@@ -32,16 +33,20 @@ final class SolveStages {
     private GlobalSolver chosenGlobal;
     private long chosenVersion = -1;
 
-    SolveStages(ConstraintSet constraints, Particles particles, SolverContext ctx, ContactSet contacts) {
+    SolveStages(ConstraintSet constraints, Particles particles, SolverContext ctx, EnclosedGases gases, ContactSet contacts) {
         this.constraints = constraints;
         this.particles = particles;
         this.ctx = ctx;
+        this.gases = gases;
         this.contacts = contacts;
     }
 
     /** The solve stage for these settings and the current constraints, made only if one of them changed. */
     SolveStage stage(SolverSettings settings, SweepListener listener) {
         SolverType type = settings.solver();
+        // A gas couples its whole surface through one volume, and vertex block descent has no term for it (its
+        // per-particle steps and the gas's row fought: a balloon crumpled to strains of 3): Gauss–Seidel solves it.
+        if (type == SolverType.VERTEX_BLOCK_DESCENT && gases.count() > 0) type = SolverType.GAUSS_SEIDEL;
         boolean colouredOrder = settings.order() == ConstraintOrder.COLOURED;
         int threads = settings.threads();
         GlobalSolver g = type.isGlobal() ? globalSolver(settings) : null; // remade if the PCG settings changed
@@ -51,19 +56,19 @@ final class SolveStages {
         // The team runs a substep's sweeps in one go, so a listener to single sweeps gets a sequential stage.
         Team helpers = listener == SweepListener.NONE ? team(threads) : null;
         if (type == SolverType.VERTEX_BLOCK_DESCENT) {
-            stage = new VertexBlockDescent(constraints.cloth(), attachments, particles, ctx, contacts, listener, helpers);
+            stage = new VertexBlockDescent(constraints.cloth(), attachments, particles, ctx, gases, contacts, listener, helpers);
         } else if (g != null) {
             List<ConstraintBlock> local = new ArrayList<>();
             for (ConstraintBlock blk : constraints.cloth()) if (!GlobalSolver.takes(blk)) local.add(blk);
-            SequentialSweeps rest = new SequentialSweeps(SweepOrder.asBuilt(List.of(attachments)), particles, ctx, contacts, listener);
-            SequentialSweeps all = new SequentialSweeps(constraints.order(), particles, ctx, contacts, listener);
+            SequentialSweeps rest = new SequentialSweeps(SweepOrder.asBuilt(List.of(attachments)), particles, ctx, gases, contacts, listener);
+            SequentialSweeps all = new SequentialSweeps(constraints.order(), particles, ctx, gases, contacts, listener);
             stage = new GlobalIterations(g, SweepOrder.asBuilt(local), rest, all, contacts, particles, ctx, listener);
         } else if (!colouredOrder) {
-            stage = new SequentialSweeps(constraints.order(), particles, ctx, contacts, listener);
+            stage = new SequentialSweeps(constraints.order(), particles, ctx, gases, contacts, listener);
         } else {
             SweepOrder col = colouring();
-            SequentialSweeps sequential = new SequentialSweeps(col, particles, ctx, contacts, listener);
-            stage = helpers == null ? sequential : new ParallelColouredSweeps(col, helpers, particles, ctx, contacts, sequential);
+            SequentialSweeps sequential = new SequentialSweeps(col, particles, ctx, gases, contacts, listener);
+            stage = helpers == null ? sequential : new ParallelColouredSweeps(col, helpers, particles, ctx, gases, contacts, sequential);
         }
         chosenType = type;
         chosenColoured = colouredOrder;
@@ -112,6 +117,9 @@ final class SolveStages {
 
     /** The last global solver built (kept while another solver type is chosen), or null. */
     GlobalSolver global() { return global; }
+
+    /** The solver the stage chosen last runs (the settings' unless a gas made it Gauss–Seidel), or null before any. */
+    SolverType inUse() { return chosenType; }
 
     /** The global solver of the stage chosen last (the last step's), or null. */
     GlobalSolver globalInUse() { return chosenGlobal; }

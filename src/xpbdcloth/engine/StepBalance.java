@@ -4,7 +4,8 @@ package xpbdcloth.engine;
  * How far the last substep's positions are from solving its step: the force left over on each free
  * particle, whatever the solver,
  * <pre>
- *   rᵢ = mᵢ (xᵢ − yᵢ) / h²  +  Σⱼ (Cⱼ/αⱼ) ∇ᵢCⱼ      (y the substep's prediction, j the compliant constraints)
+ *   rᵢ = mᵢ (xᵢ − yᵢ) / h²  +  Σⱼ (Cⱼ/αⱼ) ∇ᵢCⱼ  +  Σ_gas (p₀ − nRT/V) ∇ᵢV
+ *        (y the substep's prediction, j the compliant constraints; a gas's term is its energy's gradient)
  * </pre>
  * — zero when the step's implicit Euler equation holds (XPBD converged), and for a cloth at rest the
  * difference between its weight and what its material holds up. Reported as the worst particle's |rᵢ| over
@@ -66,6 +67,7 @@ public final class StepBalance {
                     for (int a = 0; a < 3; a++) r[3 * q + a] += C / alpha * grad[3 * k + a];
                 }
             }
+        for (EnclosedGas gas : sim.gases()) gas.addForceTerm(p, r, excluded);
         sim.markHeld(excluded);
         double worst = 0;
         for (int i = 0; i < n; i++) {

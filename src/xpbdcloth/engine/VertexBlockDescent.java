@@ -40,6 +40,8 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
     private final SolverContext ctx;
     /** What is projected after each iteration: hard and inequality blocks, attachments (XPBD), then contacts. */
     private final SweepOrder rest;
+    /** Projected after {@link #rest}: one row over a whole surface each, no per-vertex energy to descend. */
+    private final EnclosedGases gases;
     private final ContactSet contacts;
     private final SweepListener listener;
     /** The threads a substep's iterations run on, or null for this one (and for a listener to single iterations). */
@@ -141,9 +143,10 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
     }
 
     VertexBlockDescent(List<ConstraintBlock> body, AttachmentBlock attachments, Particles particles, SolverContext ctx,
-                       ContactSet contacts, SweepListener listener, Team team) {
+                       EnclosedGases gases, ContactSet contacts, SweepListener listener, Team team) {
         this.particles = particles;
         this.ctx = ctx;
+        this.gases = gases;
         this.contacts = contacts;
         this.listener = listener;
         this.team = team;
@@ -435,6 +438,7 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
             if (probe == null) {
                 for (int c = 0, nc = colours(); c < nc; c++) solveColour(c, 0, 1);
                 rest.sweep(particles, ctx);
+                gases.project(particles);
             } else {
                 // The colours' order, one particle at a time (its step moves it alone, with its contacts and pins).
                 for (int k = 0; k < n; k++) {
@@ -442,6 +446,7 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
                     probe.check(order[k], firstFamily);
                 }
                 rest.sweep(particles, ctx, probe);
+                gases.project(particles, probe);
             }
             listener.afterSweep(substep, it);
         }
@@ -632,6 +637,7 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
      * particle) and no moving collider in contact.
      */
     private boolean boundHolds() {
+        if (gases.count() > 0) return false; // a gas's energy, p₀V − nRT ln V, is not in G: its work would read as a gain
         for (int i = 0, na = attachments.count(); i < na; i++) if (!(attachments.compliance(i) > 0)) return false;
         for (int k = 0, nc = contacts.count(); k < nc; k++) if (contacts.with(k).moving()) return false;
         return true;
@@ -754,7 +760,10 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
                 solveColour(c, id, threads);
                 t.await();
             }
-            if (id == 0) rest.sweep(particles, ctx);
+            if (id == 0) {
+                rest.sweep(particles, ctx);
+                gases.project(particles);
+            }
             t.await();
         }
         if (bounded) {
