@@ -106,6 +106,12 @@ public final class SelfCollision extends Collider implements Team.Job {
     /** Pairs listed at the last build (each is a candidate until the next). */
     public int pairCount() { return pairs; }
 
+    /** The two particles of listed pair k (0 ≤ k &lt; {@link #pairCount}), end 0 or 1. */
+    public int pairParticle(int k, int end) {
+        if (k < 0 || k >= pairs) throw new IllegalArgumentException("pair must be within [0, " + pairs + "), was " + k);
+        return end == 0 ? pairI[k] : pairJ[k];
+    }
+
     /**
      * Marks both particles of every listed pair closer than {@code slack} thicknesses now: held by a contact
      * whose force no energy of the step accounts for (a penalty pair presses slightly inside t).

@@ -360,6 +360,17 @@ public final class Simulation {
         constraints.markAttached(held);
     }
 
+    /**
+     * Marks (sets true, never clears) the particles that touch something now: a collider's surface, or another
+     * layer of the cloth within its thickness. For drawing what holds the cloth; the rest of {@code out} is kept.
+     */
+    public void markTouching(boolean[] out) {
+        if (out == null || out.length < particles.count())
+            throw new IllegalArgumentException("out must hold a flag per particle (" + particles.count() + "), was " + (out == null ? "null" : out.length));
+        contacts.markTouching(particles, out);
+        if (self != null) self.markTouching(particles, out, 1.01);
+    }
+
     /** The substep h of the step in progress (or of the last step), seconds. */
     public double substep() { return ctx.h; }
 

@@ -8,6 +8,8 @@ import xpbdcloth.engine.DistanceBlock;
 import xpbdcloth.engine.Particles;
 import xpbdcloth.engine.Plane;
 import xpbdcloth.engine.RigidCollider;
+import xpbdcloth.engine.SelfCollision;
+import xpbdcloth.engine.Simulation;
 import xpbdcloth.engine.Sphere;
 import xpbdcloth.mesh.VertexNormals;
 import xpbdcloth.scene.Scene;
@@ -91,6 +93,7 @@ public final class ClothRenderer {
             else if (sc.cloth().triangles().length == 0) drawRope(g, sc.cloth());
             else drawMesh(g, sc.cloth(), eyeX - ox, eyeY, eyeZ);
             drawParticles(g, sc.cloth().particles(), state.showParticles);
+            if (state.showParticles) drawContacts(g, sc.simulation());
             if (state.showSpheres) for (Sphere s : sc.simulation().spheres()) drawSphere(g, s);
             if (state.showSpheres) for (Plane pl : sc.simulation().planes()) if (!(floorShown && isFloor(pl))) drawPlane(g, pl, sc.cloth());
             if (state.showSpheres) for (RigidCollider s : sc.simulation().solids()) drawSolid(g, s);
@@ -219,7 +222,41 @@ public final class ClothRenderer {
         g.endShape();
     }
 
-    /** A sphere with two great circles turned by its spin angle, so rotation is visible. */
+    /** One flag per particle: touching something now (kept while the count stays, so drawing allocates nothing). */
+    private boolean[] touching = new boolean[0];
+
+    /**
+     * What holds the cloth now: the particles touching a collider or another layer in red, and each listed
+     * self-collision pair within the thickness as a yellow line between its two particles.
+     */
+    void drawContacts(PGraphics g, Simulation sim) {
+        Particles p = sim.particles();
+        double[] x = p.positions();
+        SelfCollision self = sim.selfCollision();
+        if (self != null) {
+            double reach = 1.01 * self.thickness();
+            g.stroke(255, 220, 60);
+            g.strokeWeight(1.5f * strokeUnit);
+            g.beginShape(PConstants.LINES);
+            for (int k = 0, n = self.pairCount(); k < n; k++) {
+                int a = 3 * self.pairParticle(k, 0), b = 3 * self.pairParticle(k, 1);
+                double dx = x[a] - x[b], dy = x[a + 1] - x[b + 1], dz = x[a + 2] - x[b + 2];
+                if (dx * dx + dy * dy + dz * dz >= reach * reach) continue;
+                g.vertex((float) x[a], (float) x[a + 1], (float) x[a + 2]);
+                g.vertex((float) x[b], (float) x[b + 1], (float) x[b + 2]);
+            }
+            g.endShape();
+        }
+        if (touching.length < p.count()) touching = new boolean[p.count()];
+        java.util.Arrays.fill(touching, false);
+        sim.markTouching(touching);
+        g.stroke(235, 60, 50);
+        g.strokeWeight(5 * strokeUnit);
+        g.beginShape(PConstants.POINTS);
+        for (int i = 0; i < p.count(); i++) if (touching[i] && !p.isPinned(i)) g.vertex((float) x[3 * i], (float) x[3 * i + 1], (float) x[3 * i + 2]);
+        g.endShape();
+    }
+
     /** Each box and capsule's triangles, made when first drawn; forgotten with the collider (a reset makes new ones). */
     private final java.util.WeakHashMap<RigidCollider, SolidMesh> solidMeshes = new java.util.WeakHashMap<>();
 
@@ -240,6 +277,7 @@ public final class ClothRenderer {
         g.specular(0);
     }
 
+    /** A sphere with two great circles turned by its spin angle, so rotation is visible. */
     void drawSphere(PGraphics g, Sphere s) {
         g.pushMatrix();
         g.translate((float) s.centreX(), (float) s.centreY(), (float) s.centreZ());
