@@ -9,7 +9,8 @@ import java.nio.file.Path;
 /**
  * Writes a cloth's current shape as Wavefront OBJ: one {@code v} and one {@code vn} per vertex (in the
  * mesh's vertex order, the same every frame, so a sequence of files imports as an animation), then the
- * mesh's polygons as {@code f v//vn}, its polylines as {@code l}, and each named vertex group as
+ * mesh's polygons as {@code f v//vn} (or, for a mesh of triangles with texture coordinates, one {@code vt}
+ * per corner and {@code f v/vt/vn}, so a pattern's grain survives the file), its polylines as {@code l}, and each named vertex group as
  * {@code g name} with one {@code p} statement listing its vertices. Coordinates are written in Java's
  * shortest round-trip form, so {@link ObjReader} reads back the same doubles.
  */
@@ -31,9 +32,18 @@ public final class ObjWriter {
         for (int i = 0; i < x.length; i += 3) s.append("v ").append(x[i]).append(' ').append(x[i + 1]).append(' ').append(x[i + 2]).append('\n');
         boolean faces = mesh.faceCount() > 0;
         if (faces) for (int i = 0; i < n.length; i += 3) s.append("vn ").append(n[i]).append(' ').append(n[i + 1]).append(' ').append(n[i + 2]).append('\n');
+        double[] uv = mesh.triangleUVs();
+        boolean corners = uv != null && mesh.triangles().length == 3 * mesh.faceCount();
+        if (corners) for (int i = 0; i < uv.length; i += 2) s.append("vt ").append(uv[i]).append(' ').append(uv[i + 1]).append('\n');
         for (int k = 0; k < mesh.faceCount(); k++) {
             s.append('f');
-            for (int v : mesh.face(k)) s.append(' ').append(v + 1).append("//").append(v + 1);
+            int[] face = mesh.face(k);
+            for (int c = 0; c < face.length; c++) {
+                int v = face[c] + 1;
+                s.append(' ').append(v).append('/');
+                if (corners) s.append(3 * k + c + 1);
+                s.append('/').append(v);
+            }
             s.append('\n');
         }
         int[] seg = mesh.segments();

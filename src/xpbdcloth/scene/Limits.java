@@ -72,6 +72,15 @@ public final class Limits {
     public static final Range PLASTIC_RATE = new Range(1e-4, 1e4, "1/s");
     /** Poisson's ratio ν₁₂ before the positive-definite check. */
     public static final Range POISSON = new Range(-0.99, 10, "");
+    /** The air outside a closed cloth: a vacuum to ten atmospheres. */
+    public static final Range AMBIENT_PRESSURE = new Range(0, 1e6, "Pa");
+    /** A gas's pressure over the air outside at the rest shape (less than the air's would make a vacuum inside: refused). */
+    public static final Range GAUGE_PRESSURE = new Range(-1e6, 1e6, "Pa");
+    /** The gas inside a closed cloth, by amount: a nanomole to a tonne of air's worth. */
+    public static final Range MOLES = new Range(1e-9, 1e6, "mol");
+    public static final Range TEMPERATURE = new Range(1, 1e4, "K");
+    /** A held volume as a multiple of the rest volume. */
+    public static final Range VOLUME_RATIO = new Range(0.01, 100, "");
     /** Air's density, kg/m³ (water would be 1000). */
     public static final Range AIR_DENSITY = new Range(1e-3, 1e3, "kg/m³");
     /** A flat plate's drag or lift coefficient. */

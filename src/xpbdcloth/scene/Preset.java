@@ -41,10 +41,12 @@ public final class Preset {
     public final FabricSpec fabric;
     /** Quadratic drag and lift in moving air, or null. */
     public final AerodynamicsSpec aerodynamics;
+    /** The gas (or the held volume) inside a closed cloth, or null. */
+    public final PressureSpec pressure;
 
     Preset(String source, String name, String description, Cloth cloth, Map<ConstraintFamily, Material> families, SolverSettings solver,
            List<SphereSpec> spheres, List<PlaneSpec> planes, List<SolidSpec> solids, List<BodySpec> bodies, SelfCollisionSpec selfCollision, List<PinMotion> pinMotions, WindSpec wind,
-           FabricSpec fabric, AerodynamicsSpec aerodynamics) {
+           FabricSpec fabric, AerodynamicsSpec aerodynamics, PressureSpec pressure) {
         this.source = source;
         this.name = name;
         this.description = description;
@@ -60,6 +62,29 @@ public final class Preset {
         this.wind = wind;
         this.fabric = fabric;
         this.aerodynamics = aerodynamics;
+        this.pressure = pressure;
+    }
+
+    /**
+     * What fills a closed cloth: a gas given by its pressure over the air at the rest shape (gauge, Pa) or by its
+     * amount (moles at a temperature), with the air outside (ambient, Pa); or a volume held at a multiple of
+     * the rest volume. Exactly one of gauge, moles and volumeRatio is a number, the others NaN.
+     */
+    public static final class PressureSpec {
+        public final double gauge, moles, temperature, volumeRatio, ambient;
+
+        PressureSpec(double gauge, double moles, double temperature, double volumeRatio, double ambient) {
+            this.gauge = gauge; this.moles = moles; this.temperature = temperature; this.volumeRatio = volumeRatio; this.ambient = ambient;
+        }
+
+        /** The gas (or held volume) this asks for, in the closed surface of these particles' triangles. */
+        public xpbdcloth.engine.EnclosedGas fill(xpbdcloth.engine.Particles rest, int[] triangles) {
+            if (!Double.isNaN(gauge)) return xpbdcloth.engine.EnclosedGas.ofGauge(rest, triangles, gauge, ambient);
+            if (!Double.isNaN(moles)) return xpbdcloth.engine.EnclosedGas.ofGas(rest, triangles, moles * xpbdcloth.engine.EnclosedGas.GAS_CONSTANT * temperature, ambient);
+            xpbdcloth.engine.EnclosedGas held = xpbdcloth.engine.EnclosedGas.ofVolume(rest, triangles, 1);
+            held.setTargetVolume(volumeRatio * held.restVolume());
+            return held;
+        }
     }
 
     /** A triangle mesh to collide with: the file's body as placed, whether its frames loop, friction, and a rigid path and spin. */

@@ -40,7 +40,7 @@ import xpbdcloth.mesh.UsdaReader;
  */
 public final class PresetLoader {
     /** The presets that ship with the project, in the order the sketch offers them. */
-    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth", "table", "arm", "drop-fold", "fabric", "flag-fabric", "drape", "denim-fold", "mannequin-poncho", "mannequin-turn", "torus-spin", "crease");
+    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth", "table", "arm", "drop-fold", "fabric", "flag-fabric", "drape", "denim-fold", "mannequin-poncho", "mannequin-turn", "torus-spin", "crease", "pillow", "balloon");
 
     private static final ObjectMapper JSON = new ObjectMapper()
             .enable(JsonParser.Feature.STRICT_DUPLICATE_DETECTION);
@@ -325,7 +325,7 @@ public final class PresetLoader {
         Preset preset(Node root) {
             if (root.json.isObject() && root.json.has("fabrics") && !root.json.has("cloth"))
                 throw fail("", "is the fabric catalogue, not a scene: name one of its fabrics in a preset's \"fabric\": {\"catalogue\": NAME}, or press F on a fabric scene");
-            object(root, Set.of("name", "description", "cloth", "families", "solver", "spheres", "colliders", "selfCollision", "pinMotions", "wind", "fabric", "aerodynamics"));
+            object(root, Set.of("name", "description", "cloth", "families", "solver", "spheres", "colliders", "selfCollision", "pinMotions", "wind", "fabric", "aerodynamics", "pressure"));
             String name = string(required(root, "name"));
             Node d = optional(root, "description");
             String description = d == null ? "" : string(d);
@@ -355,6 +355,7 @@ public final class PresetLoader {
             String none = "and this cloth has none (" + (cloth.isMesh() ? cloth.meshFile + " has only lines" : "a single row or column of particles") + ")";
             if (fabric != null && !triangles) throw fail("fabric", "is a membrane of triangles, " + none + ": give the cloth two rows and columns, or spring families");
             if (root.json.has("aerodynamics") && !triangles) throw fail("aerodynamics", "acts on triangles, " + none + ": use wind, which acts on particles");
+            Preset.PressureSpec pressure = pressure(optional(root, "pressure"), cloth);
             List<Preset.SphereSpec> spheres = new ArrayList<>();
             Node ss = optional(root, "spheres");
             if (ss != null) for (Node s : array(ss, Limits.MAX_SPHERES)) spheres.add(sphere(s));
@@ -387,7 +388,7 @@ public final class PresetLoader {
             String tooMuch = Limits.workProblem(particles, solver.iterations(), solver.substeps(), colliders, solver.solver().isGlobal());
             // Judged on the values read, not on a field's stand-in for one out of range.
             if (tooMuch != null && found.isEmpty()) throw fail("solver", tooMuch);
-            return new Preset(file, name, description, cloth, families, solver, spheres, planes, solids, bodies, self, motions, w == null ? null : wind(w), fabric, aerodynamics(optional(root, "aerodynamics")));
+            return new Preset(file, name, description, cloth, families, solver, spheres, planes, solids, bodies, self, motions, w == null ? null : wind(w), fabric, aerodynamics(optional(root, "aerodynamics")), pressure);
         }
 
         Preset.Cloth cloth(Node n, Preset.FabricSpec fabric) {
@@ -619,6 +620,32 @@ public final class PresetLoader {
             return new Preset.AerodynamicsSpec(d == null ? xpbdcloth.engine.Aerodynamics.AIR_DENSITY : number(d, Limits.AIR_DENSITY),
                     number(required(n, "drag"), Limits.AERO_COEFFICIENT), number(required(n, "lift"), Limits.AERO_COEFFICIENT),
                     vector(required(n, "air"), Limits.SPEED));
+        }
+
+        /**
+         * What fills a closed cloth: {@code gauge} (Pa over the air at the rest shape), {@code moles} (with an optional
+         * {@code temperature}, K, default 293.15) or {@code volumeRatio}, exactly one; {@code ambient} (Pa, default
+         * 101325) outside a gas. Null when absent. The cloth must be a closed mesh.
+         */
+        Preset.PressureSpec pressure(Node n, Preset.Cloth cloth) {
+            if (n == null) return null;
+            object(n, Set.of("gauge", "moles", "temperature", "volumeRatio", "ambient"));
+            if (!cloth.isMesh())
+                throw fail(n.path, "needs a closed surface, and a grid cloth has a boundary: give cloth.mesh a closed OBJ (data/pillow.obj, data/balloon.obj)");
+            String open = xpbdcloth.engine.EnclosedGas.openEdge(cloth.mesh.triangles());
+            if (open != null) throw fail(n.path, "needs a closed surface, and " + cloth.meshFile + " is not one: " + open);
+            Node g = optional(n, "gauge"), m = optional(n, "moles"), v = optional(n, "volumeRatio"), t = optional(n, "temperature"), a = optional(n, "ambient");
+            int given = (g == null ? 0 : 1) + (m == null ? 0 : 1) + (v == null ? 0 : 1);
+            if (given != 1)
+                throw fail(n.path, "needs exactly one of gauge (Pa over the air outside), moles (the gas's amount) and volumeRatio (a held volume), had " + given);
+            if (t != null && m == null) throw fail(t.path, "goes with moles (a gas given by its amount)");
+            if (a != null && v != null) throw fail(a.path, "goes with a gas (gauge or moles), not a held volume");
+            double ambient = a == null ? 101325 : number(a, Limits.AMBIENT_PRESSURE);
+            double gauge = g == null ? Double.NaN : number(g, Limits.GAUGE_PRESSURE);
+            if (g != null && !(ambient + gauge > 0))
+                throw fail(g.path, "must leave the gas a pressure above 0 (gauge > −ambient, " + -ambient + " Pa), was " + gauge);
+            return new Preset.PressureSpec(gauge, m == null ? Double.NaN : number(m, Limits.MOLES), t == null ? 293.15 : number(t, Limits.TEMPERATURE),
+                    v == null ? Double.NaN : number(v, Limits.VOLUME_RATIO), v == null ? ambient : 0);
         }
 
         Map<ConstraintFamily, Material> families(Node n) {

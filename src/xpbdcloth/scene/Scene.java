@@ -1,7 +1,10 @@
 package xpbdcloth.scene;
 
+import java.util.Locale;
 import xpbdcloth.engine.Aerodynamics;
 import xpbdcloth.engine.ConstraintBlock;
+import xpbdcloth.engine.DihedralBlock;
+import xpbdcloth.engine.EnclosedGas;
 import xpbdcloth.engine.HingePlasticity;
 import xpbdcloth.fabric.Fabric;
 import xpbdcloth.fabric.FabricConstraints;
@@ -35,6 +38,15 @@ public final class Scene {
     private boolean windOn;
     /** The fabric the cloth is now (null if it is springs): the preset's, until {@link #useFabric}. */
     private Fabric fabric;
+    /** The fabric's yielding hinges and its measured stiffening, each null when the preset asks for none. */
+    private HingePlasticity plasticity;
+    private MeasuredStiffening stiffening;
+    /** The gas (or held volume) inside the cloth, or null when the preset fills it with nothing. */
+    private EnclosedGas gas;
+    /** The gas's nRT as the preset filled it (J), what the gas keys pump around. */
+    private double presetAmount = Double.NaN;
+    /** Whether the fabric bends by dihedral hinges (a bent rest, or yielding) rather than plate patches. */
+    private boolean bendsByHinges;
 
     private Scene(Preset preset) {
         this.preset = preset;
@@ -46,10 +58,21 @@ public final class Scene {
             double[] warp = f.warp != null ? f.warp : FabricConstraints.warpFromTextureCoordinates(cloth.particles(), cloth.triangles(), preset.cloth.mesh.triangleUVs());
             for (ConstraintBlock b : FabricConstraints.build(cloth.particles(), cloth.triangles(), warp, f.fabric.membrane, f.fabric.bendingStiffness, f.tethers, f.plasticity != null))
                 simulation.add(b);
-            if (f.plasticity != null)
-                simulation.add(new HingePlasticity(simulation.blocks(), cloth.particles(), f.plasticity.yieldCurvature, f.plasticity.rate));
-            if (f.stiffening) simulation.add(new MeasuredStiffening(simulation.blocks(), f.fabric.stretchingCurve));
+            if (f.plasticity != null) {
+                plasticity = new HingePlasticity(simulation.blocks(), cloth.particles(), f.plasticity.yieldCurvature, f.plasticity.rate);
+                simulation.add(plasticity);
+            }
+            if (f.stiffening) {
+                stiffening = new MeasuredStiffening(simulation.blocks(), f.fabric.stretchingCurve);
+                simulation.add(stiffening);
+            }
+            for (ConstraintBlock b : simulation.blocks()) bendsByHinges |= b instanceof DihedralBlock;
             fabric = f.fabric;
+        }
+        if (preset.pressure != null) {
+            gas = preset.pressure.fill(cloth.particles(), cloth.triangles());
+            presetAmount = gas.amount();
+            simulation.add(gas);
         }
         if (preset.aerodynamics != null) {
             Preset.AerodynamicsSpec a = preset.aerodynamics;
@@ -162,9 +185,39 @@ public final class Scene {
     public void useFabric(Fabric next) {
         if (fabric == null) throw new IllegalArgumentException("fabric: this cloth is springs, not a fabric (its preset has no \"fabric\" block)");
         FabricSwap.apply(simulation.blocks(), cloth.particles(), next);
-        for (xpbdcloth.engine.AfterStep a : simulation.afterSteps())
-            if (a instanceof MeasuredStiffening) ((MeasuredStiffening) a).use(next.stretchingCurve);
+        if (stiffening != null) stiffening.use(next.stretchingCurve);
         fabric = next;
+    }
+
+    /** The gas (or held volume) inside the cloth, or null. */
+    public EnclosedGas gas() { return gas; }
+
+    /** How far the gas keys pump from the preset's amount: a thousandth to a thousand times it. */
+    static final double PUMP_RANGE = 1e3;
+
+    /**
+     * Pumps gas in (factor > 1) or lets it out: nRT times the factor, within {@link #PUMP_RANGE} of the preset's
+     * amount, or a held volume within the presets' volume ratios (a change that would leave them is not made).
+     * Returns whether it changed; false for a cloth with nothing inside.
+     */
+    public boolean inflate(double factor) {
+        if (gas == null) return false;
+        if (gas.isGas()) {
+            double next = gas.amount() * factor, from = presetAmount;
+            if (!(next >= from / PUMP_RANGE && next <= from * PUMP_RANGE && next <= EnclosedGas.MAX_AMOUNT)) return false;
+            gas.setAmount(next);
+        } else {
+            double next = gas.targetVolume() * factor;
+            if (!(next >= Limits.VOLUME_RATIO.lo * gas.restVolume() && next <= Limits.VOLUME_RATIO.hi * gas.restVolume())) return false;
+            gas.setTargetVolume(next);
+        }
+        return true;
+    }
+
+    /** How the fabric bends, in words: plate patches on a flat rest, dihedral hinges where it is bent or may yield. */
+    public String bendingModel() {
+        if (plasticity != null) return String.format(Locale.ROOT, "dihedral hinges yielding past %.3g/m (a crease)", plasticity.yieldCurvature());
+        return bendsByHinges ? "dihedral hinges (a bent rest)" : "the plate's on every triangle";
     }
     public Cloth cloth() { return cloth; }
     public Simulation simulation() { return simulation; }

@@ -4,6 +4,7 @@ import java.util.List;
 import java.util.Locale;
 import processing.core.PConstants;
 import processing.core.PGraphics;
+import xpbdcloth.mesh.TriangleIntersections;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.Material;
 import xpbdcloth.engine.Metrics;
@@ -86,21 +87,22 @@ final class Hud {
         String[] lines = {
                 s.preset().name + "  —  " + (s.sideBySide() ? "side by side: PBD | XPBD" : s.mode().toString()) + (s.paused ? "   [paused]" : ""),
                 fmt("iterations %d   substeps %d   dt 1/%.0f s (%.1f ms)", s.iterations(), s.substeps(), 1 / s.dt(), 1000 * s.dt()),
-                fmt("solver %s   %s%s", s.solverType().label(), balance(sim),
+                fmt("solver %s%s   %s%s", s.solverType().label(), sim.solverInUse() == null || sim.solverInUse() == s.solverType() ? ""
+                                : " (solved by " + sim.solverInUse().label() + ": it has no gas term)", balance(sim),
                         sim.profile().lastPcgIterations() > 0 ? fmt("   CG iterations %d", sim.profile().lastPcgIterations()) : ""),
                 km == null ? fmt("fabric %s%s%s   (F: next fabric)", fabric == null ? "(none)" : fabric.name, fabric == null || fabric.description.isEmpty() ? "" : " — " + fabric.description,
                         tethered ? ", tethered" : "") : fmt("family %s", famName),
                 km == null ? (fabric == null ? "" : fmt("  membrane warp %.0f N/m  weft %.0f N/m  ν12 %.2f  shear %.0f N/m", fabric.membrane.warpModulus,
                         fabric.membrane.weftModulus, fabric.membrane.poisson, fabric.membrane.shearModulus))
                         : fmt("  PBD  k %.2f  →  k' %.4f %s", km.stiffness, kPrime(s, km.stiffness), s.mullerCorrection() ? "(Müller, n=" + s.iterations() + ")" : "(raw k)"),
-                km == null ? (fabric == null ? "" : fmt("  bending %.1e N·m, %s%s", fabric.bendingStiffness, bendingModel(sim),
+                km == null ? (fabric == null ? "" : fmt("  bending %.1e N·m, %s%s", fabric.bendingStiffness, running.get(0).bendingModel(),
                         Double.isNaN(fabric.arealDensity) ? "" : fmt("   %.0f g/m²", 1000 * fabric.arealDensity)))
                         : fmt("  XPBD α %.2e m/N  →  1/α %s", km.compliance, km.compliance == 0 ? "infinite (hard)" : fmt("%.2e N/m", 1 / km.compliance)),
                 recording ? fmt("recording: %.4g frames per simulated second (wall-clock timings not drawn)", 1 / (xpbdcloth.scene.ObjExport.stepsPerFrame(s.dt()) * s.dt()))
                         : fmt("step %.1f ms for %.0f ms of motion (%s)   render %.1f ms   %.0f fps   %.1f kB allocated/frame", simMs, 1000 * s.dt(),
                         realTime(simMs, 1000 * s.dt(), slowMotion), renderMs, fps, bytesPerFrame / 1024),
-                fmt("particles %d   constraints %d   contacts %d touching of %d%s%s", sim.particles().count() * running.size(), constraints,
-                        sim.profile().touchingContacts(), sim.profile().contactCount(), pinched(sim), recording ? "" : fmt("   contacts %.2f ms, constraints %.2f ms", sim.profile().contactMs(), sim.profile().constraintSolveMs())),
+                fmt("particles %d   constraints %d   contacts %d touching of %d%s%s%s", sim.particles().count() * running.size(), constraints,
+                        sim.profile().touchingContacts(), sim.profile().contactCount(), pinched(sim), crossingsText(running.get(0)), recording ? "" : fmt("   contacts %.2f ms, constraints %.2f ms", sim.profile().contactMs(), sim.profile().constraintSolveMs())),
                 (s.sideBySide() ? "strain: under each cloth" : fmt("strain mean %.2f %%  max %.2f %%",
                         100 * Metrics.meanClothStrain(sim), 100 * Metrics.maxClothStrain(sim)))
                         + fmt("   KE %.2e J", Metrics.kineticEnergy(sim.particles()))
@@ -109,7 +111,8 @@ final class Hud {
                 (s.windOn() ? fmt("wind %.1f m/s towards %.0f°", s.windSpeed(), Math.toDegrees(s.windAngle())) : "wind off")
                         + (s.recordingUsd() ? fmt("   USD recording: %d frames (R ends it)", s.usdFrames()) : "")
                         + (sim.selfCollision() == null ? "   self-collision off" : fmt("   self-collision %.1f mm, %d pairs near", 1000 * sim.selfCollision().thickness(), sim.selfCollision().pairCount()))
-                        + (sim.selfCollision() == null || sim.selfCollision().guard() == null ? "" : fmt(", continuous (%d cut-backs)", sim.selfCollision().guard().events())),
+                        + (sim.selfCollision() == null || sim.selfCollision().guard() == null ? "" : fmt(", continuous (%d cut-backs)", sim.selfCollision().guard().events()))
+                        + gas(running.get(0).gas(), sim),
                 s.showHelp ? "h: hide the keys" : "h: keys   q: quit",
         };
         LiveFit fit = s.fit();
@@ -282,19 +285,43 @@ final class Hud {
         }
     }
 
+    /** The crossing count's text, counted every {@link #CROSSINGS_EVERY} formats (a count of a 64² cloth takes 10–20 ms). */
+    private String crossings = "";
+    private int formatsSinceCrossings = Integer.MAX_VALUE;
+    private xpbdcloth.scene.Scene crossingsCountedFor;
+    static final int CROSSINGS_EVERY = 3;
+
+    private String crossingsText(xpbdcloth.scene.Scene scene) {
+        if (++formatsSinceCrossings >= CROSSINGS_EVERY || scene != crossingsCountedFor) {
+            crossings = crossings(scene);
+            formatsSinceCrossings = 0;
+            crossingsCountedFor = scene;
+        }
+        return crossings;
+    }
+
+    /**
+     * ", N crossing triangle pairs": how many pairs of the cloth's triangles pass through each other now
+     * ({@link TriangleIntersections}, the measure self-collision must hold at 0); nothing for a rope.
+     */
+    static String crossings(xpbdcloth.scene.Scene scene) {
+        int[] t = scene.cloth().triangles();
+        if (t.length == 0) return "";
+        return fmt(", %d crossing triangle pairs", TriangleIntersections.count(scene.simulation().particles().positions(), t));
+    }
+
+    /** The gas inside a closed cloth: its pressure over the air and its volume (j/J pump it), or nothing. */
+    static String gas(xpbdcloth.engine.EnclosedGas gas, Simulation sim) {
+        if (gas == null) return "";
+        double v = gas.volume(sim.particles());
+        // A gas's pressure is its law's at the volume it has (what a gauge would read); a held volume's, the push holding it.
+        String what = gas.isGas() ? fmt("   gas %+.3g kPa over the air", (gas.amount() / v - gas.ambient()) / 1000) : fmt("   held volume, %.3g kPa to hold it", gas.pressure() / 1000);
+        return what + fmt(", %.3g L (rest %.3g L)", 1000 * v, 1000 * gas.restVolume());
+    }
+
     /** ", N pinched" when colliders have closed on particles and one had to give (they are inside it), else nothing. */
     static String pinched(Simulation sim) {
         int n = sim.profile().pinchedParticles();
         return n == 0 ? "" : fmt(", %d pinched inside a collider", n);
-    }
-
-    /** How the fabric bends: plate patches on a flat rest, dihedral hinges where it is bent or may yield (a crease). */
-    static String bendingModel(Simulation sim) {
-        for (xpbdcloth.engine.AfterStep a : sim.afterSteps())
-            if (a instanceof xpbdcloth.engine.HingePlasticity)
-                return fmt("dihedral hinges yielding past %.3g/m (a crease)", ((xpbdcloth.engine.HingePlasticity) a).yieldCurvature());
-        for (xpbdcloth.engine.ConstraintBlock b : sim.blocks())
-            if (b instanceof xpbdcloth.engine.DihedralBlock) return "dihedral hinges (a bent rest)";
-        return "the plate's on every triangle";
     }
 }

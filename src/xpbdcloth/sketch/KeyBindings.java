@@ -51,7 +51,9 @@ public final class KeyBindings {
         b.add(new KeyBinding('K', "stiffness k -0.05 (PBD)", s -> s.changeStiffness(-1), KeyBindings::material));
         b.add(new KeyBinding('a', "compliance alpha x sqrt(10) (XPBD, softer)", s -> s.changeCompliance(1), KeyBindings::material));
         b.add(new KeyBinding('A', "compliance alpha / sqrt(10) (XPBD, stiffer)", s -> s.changeCompliance(-1), KeyBindings::material));
-        b.add(new KeyBinding('F', "fabric: the next measured fabric, on a fabric scene (no reset)", SketchState::cycleFabric, s -> s.fabric() == null ? null : s.fabric().name));
+        b.add(new KeyBinding('F', "fabric: the next measured one (no reset)", SketchState::cycleFabric, s -> s.fabric() == null ? null : s.fabric().name));
+        b.add(new KeyBinding('j', "gas in x1.25 (pillow, balloon)", s -> s.inflate(1), SketchState::gasAmount));
+        b.add(new KeyBinding('J', "gas out /1.25", s -> s.inflate(-1), SketchState::gasAmount));
         b.add(new KeyBinding('b', "side by side: PBD left, XPBD right", SketchState::toggleSideBySide, SketchState::sideBySide));
         // Ten scenes have keys; the others load with --scene or 'l'.
         for (int i = 0; i < Math.min(10, xpbdcloth.scene.PresetLoader.BUILT_IN.size()); i++) {
@@ -70,9 +72,9 @@ public final class KeyBindings {
         b.add(new KeyBinding('d', "wind direction +45°", SketchState::rotateWind, SketchState::windAngle));
         b.add(new KeyBinding('e', "wind speed +0.5 m/s", s -> s.changeWindSpeed(1), SketchState::windSpeed));
         b.add(new KeyBinding('E', "wind speed -0.5 m/s", s -> s.changeWindSpeed(-1), SketchState::windSpeed));
-        b.add(new KeyBinding('z', "self-collision: off, particle pairs, pairs + continuous triangle guard", SketchState::cycleSelfCollision, SketchState::selfCollisionState));
+        b.add(new KeyBinding('z', "self-collision: off, pairs, pairs + guard", SketchState::cycleSelfCollision, SketchState::selfCollisionState));
         b.add(new KeyBinding('x', "wireframe coloured by strain", s -> s.wireframe = !s.wireframe, s -> s.wireframe));
-        b.add(new KeyBinding('o', "particles (pinned in orange)", s -> s.showParticles = !s.showParticles, s -> s.showParticles));
+        b.add(new KeyBinding('o', "particles and contacts (red)", s -> s.showParticles = !s.showParticles, s -> s.showParticles));
         b.add(new KeyBinding('s', "spheres", s -> s.showSpheres = !s.showSpheres, s -> s.showSpheres));
         b.add(new KeyBinding('g', "ground: floor, grid and shadows", s -> s.showGrid = !s.showGrid, s -> s.showGrid));
         b.add(new KeyBinding('h', "this help", s -> s.showHelp = !s.showHelp, s -> s.showHelp));

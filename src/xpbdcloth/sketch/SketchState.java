@@ -279,6 +279,30 @@ public final class SketchState {
     }
 
     /**
+     * Pumps gas into (direction > 0) or out of the running closed cloths, ×1.25 or ÷1.25 a press (a held volume
+     * grows or shrinks the same), until the presets' limits.
+     */
+    public void inflate(int direction) {
+        xpbdcloth.engine.EnclosedGas gas = running().get(0).gas();
+        if (gas == null) {
+            error("this cloth encloses nothing: j/J work on a closed cloth with a \"pressure\" block (pillow, balloon)");
+            return;
+        }
+        double factor = direction > 0 ? 1.25 : 1 / 1.25;
+        boolean changed = false;
+        for (Scene s : running()) changed |= s.inflate(factor);
+        if (!changed) error(direction > 0 ? "the gas is at its most (the presets' limit)" : "the gas is at its least (the presets' limit)");
+        else if (gas.isGas()) say(String.format(java.util.Locale.ROOT, "gas nRT %.4g J: %.4g kPa at the rest volume", gas.amount(), gas.amount() / gas.restVolume() / 1000));
+        else say(String.format(java.util.Locale.ROOT, "held volume %.4g L (%.2f × rest)", 1000 * gas.targetVolume(), gas.targetVolume() / gas.restVolume()));
+    }
+
+    /** The gas's nRT (J), or the held volume (m³); NaN for a cloth that encloses nothing. */
+    public double gasAmount() {
+        xpbdcloth.engine.EnclosedGas gas = running().get(0).gas();
+        return gas == null ? Double.NaN : gas.isGas() ? gas.amount() : gas.targetVolume();
+    }
+
+    /**
      * The running cloths become the named catalogue fabric (no reset), for code (the library's
      * {@code ClothView.fabric}); an unknown name or a cloth of springs is refused by name.
      */

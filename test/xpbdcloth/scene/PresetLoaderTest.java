@@ -117,6 +117,51 @@ class PresetLoaderTest {
         assertEquals("fabric.plasticity.rate", e.field());
     }
 
+    /** A closed mesh of a measured fabric with a pressure block (the balloon's sphere), read as data/x.json reads its mesh. */
+    static String closed(String cloth, String pressure) {
+        return "{ \"name\": \"b\", \"cloth\": " + cloth + ", \"fabric\": { \"catalogue\": \"swimsuit\" },"
+                + " \"solver\": { \"mode\": \"XPBD\", \"iterations\": 2, \"substeps\": 2, \"dt\": 0.02 }, \"pressure\": " + pressure + " }";
+    }
+
+    static final String BALLOON = "{ \"mesh\": { \"file\": \"balloon.obj\" } }";
+
+    /**
+     * A pressure block fills a closed mesh with a gas by its gauge at the rest shape or by its amount, or holds a
+     * volume; one that asks for two, none, a vacuum inside, a field of another kind, or a cloth that is not closed
+     * is refused by field.
+     */
+    @Test
+    void pressureFillsAClosedMeshAndBadOnesAreNamed() {
+        String file = "data/b.json";
+        xpbdcloth.engine.EnclosedGas gas = Scene.of(PresetLoader.parse(file, closed(BALLOON, "{ \"gauge\": 150 }"))).gas();
+        assertEquals((101325 + 150) * gas.restVolume(), gas.amount(), 1e-9 * gas.amount());
+        gas = Scene.of(PresetLoader.parse(file, closed(BALLOON, "{ \"moles\": 0.5, \"temperature\": 300, \"ambient\": 0 }"))).gas();
+        assertEquals(0.5 * xpbdcloth.engine.EnclosedGas.GAS_CONSTANT * 300, gas.amount(), 1e-12);
+        assertEquals(0, gas.ambient());
+        gas = Scene.of(PresetLoader.parse(file, closed(BALLOON, "{ \"volumeRatio\": 1.2 }"))).gas();
+        assertEquals(1.2 * gas.restVolume(), gas.targetVolume(), 1e-15);
+        String[][] bad = {
+                {"{ \"gauge\": 150, \"moles\": 1 }", "pressure", "exactly one"},
+                {"{ \"ambient\": 1000 }", "pressure", "exactly one"},
+                {"{ \"gauge\": -2e5 }", "pressure.gauge", "above 0"},
+                {"{ \"gauge\": 10, \"temperature\": 300 }", "pressure.temperature", "goes with moles"},
+                {"{ \"volumeRatio\": 1, \"ambient\": 0 }", "pressure.ambient", "goes with a gas"},
+                {"{ \"volumeRatio\": 0 }", "pressure.volumeRatio", ""},
+                {"{ \"gauge\": 10, \"volume\": 1 }", "pressure.volume", "volume"}};
+        for (String[] b : bad) {
+            PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse(file, closed(BALLOON, b[0])), b[0]);
+            assertEquals(b[1], e.field(), b[0]);
+            assertTrue(e.getMessage().contains(b[2]), e.getMessage());
+        }
+        PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse(file, closed("{ \"mesh\": { \"file\": \"flag-with-hole.obj\" } }", "{ \"gauge\": 10 }")
+                .replace("\"swimsuit\"", "\"swimsuit\", \"warp\": [1, 0, 0]")));
+        assertEquals("pressure", e.field());
+        assertTrue(e.getMessage().contains("borders one triangle only"), e.getMessage());
+        e = assertThrows(PresetException.class, () -> PresetLoader.parse(file, fabric(COTTONISH).replace("\"cloth\"", "\"pressure\": { \"gauge\": 10 }, \"cloth\"")));
+        assertEquals("pressure", e.field());
+        assertTrue(e.getMessage().contains("grid cloth has a boundary"), e.getMessage());
+    }
+
     /** The measured curve is a catalogue fabric's: moduli of one's own have none, and asking for it is named. */
     @Test
     void stiffeningNeedsAMeasuredCurve() {

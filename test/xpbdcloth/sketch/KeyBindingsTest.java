@@ -29,6 +29,7 @@ class KeyBindingsTest {
             SketchState s = fresh();
             if (b.key == '1') s.selectScene(1); // '1' selects hanging, which is already running
             if (b.key == 'F') s.selectScene(PresetLoader.BUILT_IN.indexOf("fabric")); // the fabric key needs a fabric
+            if (b.key == 'j' || b.key == 'J') s.selectScene(PresetLoader.BUILT_IN.indexOf("balloon")); // the gas keys need a gas
             Object before = b.observe(s);
             b.press(s);
             Object after = b.observe(s);

@@ -18,9 +18,11 @@ import xpbdcloth.scene.Scene;
  * one field just outside its range, and the loader must refuse it naming that field and the range.
  *
  * <p>Every field the loader accepts is drawn (a test holds the fuzzer to the loader's own list of fields):
- * grids and the two shipped meshes (placed, welded, pinned by index, group or box), spring families or a
- * fabric (its moduli or a catalogue name, warp, tethers, plasticity, a catalogue fabric's stiffening), every solver, spheres and colliders of every
- * kind, pin motions (moves and turns), wind, aerodynamics and self-collision.
+ * grids and the shipped meshes (placed, welded, pinned by index, group or box; the closed pillow and balloon
+ * filled by a pressure block: a gas by its gauge or its amount, in air or a vacuum, or a held volume), spring
+ * families or a fabric (its moduli or a catalogue name, warp, tethers, plasticity, a catalogue fabric's
+ * stiffening), every solver, spheres and colliders of every kind, pin motions (moves and turns), wind,
+ * aerodynamics and self-collision.
  *
  * <p>What is not drawn jointly: a case's work (particles × iterations × substeps × steps) is held under
  * a budget so a case costs a fraction of a second, so the largest cloths run with few sweeps and the
@@ -37,14 +39,17 @@ final class PresetFuzz {
 
     /** The shipped meshes a case may use: file, particles, shortest rest edge (m), a vertex group (or null). */
     static final Object[][] MESHES = {{"flag-with-hole.obj", "hoist"}, {"round-tablecloth.obj", "hem"}};
-    private static double[] meshFacts; // per mesh: particles, shortest edge
+    /** The shipped closed meshes, which a "pressure" block fills: file, a vertex group (or null). */
+    static final Object[][] CLOSED = {{"pillow.obj", "seam"}, {"balloon.obj", null}};
+    private static double[] meshFacts; // per mesh (MESHES, then CLOSED): particles, shortest edge
 
     /** Particles and shortest edge of each shipped mesh, read once from the jar. */
     static synchronized double[] meshFacts() {
         if (meshFacts != null) return meshFacts;
-        double[] out = new double[2 * MESHES.length];
-        for (int m = 0; m < MESHES.length; m++) {
-            String text = "{\"name\": \"m\", \"cloth\": {\"mesh\": {\"file\": \"" + MESHES[m][0] + "\"}, \"arealDensity\": 0.2, \"pins\": [0]},"
+        double[] out = new double[2 * (MESHES.length + CLOSED.length)];
+        for (int m = 0; m < MESHES.length + CLOSED.length; m++) {
+            Object file = m < MESHES.length ? MESHES[m][0] : CLOSED[m - MESHES.length][0];
+            String text = "{\"name\": \"m\", \"cloth\": {\"mesh\": {\"file\": \"" + file + "\"}, \"arealDensity\": 0.2, \"pins\": [0]},"
                     + " \"families\": {\"structural\": {\"stiffness\": 1, \"compliance\": 0}}, \"solver\": {\"mode\": \"XPBD\", \"iterations\": 1, \"substeps\": 1, \"dt\": 0.02, \"mullerCorrection\": true, \"gravity\": [0, -9.81, 0]}}";
             xpbdcloth.mesh.ClothMesh mesh = Scene.of(PresetLoader.parse("fuzz.json", text)).cloth().mesh();
             double shortest = Double.MAX_VALUE;
@@ -166,7 +171,14 @@ final class PresetFuzz {
             double meshScale = mesh ? Math.min(500, draw(Limits.MESH_SCALE, true)) : 1;
             boolean triangles = mesh || (columns > 1 && rows > 1);
             if (!triangles) fabric = catalogue = false;
-            long particles = mesh ? (long) meshFacts()[2 * meshIndex] : (long) columns * rows;
+            // A closed mesh filled by a "pressure" block in one mesh case of three, drawn from a stream of its own (seeded
+            // by values drawn above) so the case's other draws stay: the pillow under a fabric (a warp of [1, 0, 0] lies
+            // in none of the balloon's side triangles), either under springs.
+            Random closedDraw = new Random(Double.doubleToLongBits(density) ^ Double.doubleToLongBits(dt) ^ iterations);
+            int closed = mesh && closedDraw.nextInt(3) == 0 ? (fabric ? 0 : closedDraw.nextInt(CLOSED.length)) : -1;
+            int facts = closed >= 0 ? MESHES.length + closed : meshIndex;
+            Object meshFile = closed >= 0 ? CLOSED[closed][0] : MESHES[meshIndex][0], meshGroup = closed >= 0 ? CLOSED[closed][1] : MESHES[meshIndex][1];
+            long particles = mesh ? (long) meshFacts()[2 * facts] : (long) columns * rows;
             double budget = global ? WORK_BUDGET / 100 : WORK_BUDGET;
             while (particles * (double) iterations * substeps > budget && iterations * substeps > 1) {
                 if (iterations >= substeps) iterations = Math.max(1, iterations / 2); else substeps = Math.max(1, substeps / 2);
@@ -179,7 +191,7 @@ final class PresetFuzz {
             if (mesh) {
                 // Turned about x only when a fabric's warp [1, 0, 0] must stay in every triangle's plane.
                 String rotation = fabric ? "[" + num(draw(Limits.ROTATION, false)) + ", 0, 0]" : vec(Limits.ROTATION);
-                json.append("\"mesh\": { \"file\": \"").append(MESHES[meshIndex][0]).append("\", \"weld\": ").append(num(r.nextInt(4) == 0 ? 0 : 1e-3 * r.nextDouble()))
+                json.append("\"mesh\": { \"file\": \"").append(meshFile).append("\", \"weld\": ").append(num(r.nextInt(4) == 0 ? 0 : 1e-3 * r.nextDouble()))
                     .append(", \"scale\": ").append(num(meshScale)).append(", \"rotation\": ").append(rotation)
                     .append(", \"translation\": ").append(vec(new Limits.Range(-(990 - 2 * meshScale), 990 - 2 * meshScale, "m"))).append(" }").append(massField).append(", \"pins\": [");
                 int pins = r.nextInt(4);
@@ -187,7 +199,9 @@ final class PresetFuzz {
                     json.append(k == 0 ? "" : ", ");
                     switch (r.nextInt(3)) {
                         case 0: json.append(r.nextInt((int) particles)); break;
-                        case 1: json.append("{ \"group\": \"").append(MESHES[meshIndex][1]).append("\" }"); break;
+                        case 1:
+                            if (meshGroup != null) { json.append("{ \"group\": \"").append(meshGroup).append("\" }"); break; }
+                            json.append(r.nextInt((int) particles)); break;
                         default: json.append("{ \"box\": { \"min\": [-1000, -1000, -1000], \"max\": [1000, 1000, 1000] } }"); // every vertex
                     }
                 }
@@ -250,7 +264,7 @@ final class PresetFuzz {
                 .append(", \"damping\": ").append(num(draw(Limits.DAMPING, false)))
                 .append(", \"type\": \"").append(global ? (r.nextBoolean() ? "jacobi-pcg" : "multigrid-pcg") : descent ? "vertex-block-descent" : "gauss-seidel").append("\" }");
             // A collider's margin is half the cloth's thickness, which may not exceed the cloth's spacing.
-            double halfEdge = mesh ? 0.5 * meshScale * meshFacts()[2 * meshIndex + 1]
+            double halfEdge = mesh ? 0.5 * meshScale * meshFacts()[2 * facts + 1]
                     : 0.5 * Math.min(columns > 1 ? width / (columns - 1) : Double.POSITIVE_INFINITY, rows > 1 ? height / (rows - 1) : Double.POSITIVE_INFINITY);
             int spheres = r.nextInt(3);
             if (spheres > 0) {
@@ -334,9 +348,28 @@ final class PresetFuzz {
                     json.append(", \"selfCollision\": { \"thickness\": ").append(num(t)).append(", \"staticFriction\": ").append(num(draw(Limits.FRICTION, false)))
                         .append(", \"kineticFriction\": ").append(num(draw(Limits.FRICTION, false))).append(continuous()).append(" }");
             }
+            if (closed >= 0) json.append(pressure(new Random(json.toString().hashCode())));
             json.append(" }");
             if (r.nextInt(5) == 0 && !mesh) breakOneField();
             return json.toString();
+        }
+
+        /** A "pressure" block: a gas by its gauge or its amount (in air or a vacuum), or a held volume, each a third of the time. */
+        static String pressure(Random own) {
+            double ambient = own.nextInt(4) == 0 ? 0 : Limits.AMBIENT_PRESSURE.hi * own.nextDouble();
+            switch (own.nextInt(3)) {
+                case 0: {
+                    // Above −ambient (a gas needs a pressure above 0), up to the range's top.
+                    double gauge = ambient == 0 ? logUniform(own, new Limits.Range(1e-3, Limits.GAUGE_PRESSURE.hi, "Pa"))
+                            : -0.999 * ambient + own.nextDouble() * (Limits.GAUGE_PRESSURE.hi + 0.999 * ambient);
+                    return ", \"pressure\": { \"gauge\": " + gauge + ", \"ambient\": " + ambient + " }";
+                }
+                case 1:
+                    return ", \"pressure\": { \"moles\": " + logUniform(own, Limits.MOLES) + ", \"temperature\": " + logUniform(own, Limits.TEMPERATURE)
+                            + ", \"ambient\": " + ambient + " }";
+                default:
+                    return ", \"pressure\": { \"volumeRatio\": " + logUniform(own, Limits.VOLUME_RATIO) + " }";
+            }
         }
 
         /** Puts one field just outside its range. */
