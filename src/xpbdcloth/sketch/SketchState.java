@@ -280,7 +280,7 @@ public final class SketchState {
 
     /**
      * Pumps gas into (direction > 0) or out of the running closed cloths, ×1.25 or ÷1.25 a press (a held volume
-     * grows or shrinks the same), until the presets' limits.
+     * grows or shrinks the same), within a thousand times the preset's amount (a held volume, its ratio's range).
      */
     public void inflate(int direction) {
         xpbdcloth.engine.EnclosedGas gas = running().get(0).gas();
@@ -291,7 +291,7 @@ public final class SketchState {
         double factor = direction > 0 ? 1.25 : 1 / 1.25;
         boolean changed = false;
         for (Scene s : running()) changed |= s.inflate(factor);
-        if (!changed) error(direction > 0 ? "the gas is at its most (the presets' limit)" : "the gas is at its least (the presets' limit)");
+        if (!changed) error("the gas is at its " + (direction > 0 ? "most" : "least") + ": the keys pump within a thousand times the preset's amount (a held volume, within its ratios 0.01 to 100)");
         else if (gas.isGas()) say(String.format(java.util.Locale.ROOT, "gas nRT %.4g J: %.4g kPa at the rest volume", gas.amount(), gas.amount() / gas.restVolume() / 1000));
         else say(String.format(java.util.Locale.ROOT, "held volume %.4g L (%.2f × rest)", 1000 * gas.targetVolume(), gas.targetVolume() / gas.restVolume()));
     }
