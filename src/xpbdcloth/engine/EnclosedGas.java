@@ -76,10 +76,12 @@ public final class EnclosedGas {
         return g;
     }
 
-    /** A closed surface that holds {@code volume} m³ whatever presses on it (incompressible filling). */
-    public static EnclosedGas ofVolume(Particles rest, int[] triangles, double volume) {
-        Check.inRange("volume", volume, Double.MIN_NORMAL, MAX_VOLUME);
-        return new EnclosedGas(rest, triangles, Double.NaN, volume, 0);
+    /** A closed surface that holds {@code ratio} times its rest volume whatever presses on it (an incompressible filling). */
+    public static EnclosedGas ofHeldVolume(Particles rest, int[] triangles, double ratio) {
+        Check.inRange("ratio", ratio, Double.MIN_NORMAL, 1e6);
+        EnclosedGas g = new EnclosedGas(rest, triangles, Double.NaN, 1, 0);
+        g.setTargetVolume(ratio * g.restVolume);
+        return g;
     }
 
     private EnclosedGas(Particles rest, int[] triangles, double amount, double target, double ambient) {
@@ -202,6 +204,9 @@ public final class EnclosedGas {
     /** The particles of the surface (a copy). */
     public int[] particles() { return vertex.clone(); }
 
+    /** A volume no smaller than {@link #VOLUME_FLOOR} of the rest volume (a crushed or inverted surface's stand-in). */
+    private double floored(double volume) { return Math.max(volume, VOLUME_FLOOR * restVolume); }
+
     /** Once per substep, after the prediction: λ = 0, and the gas law linearised at the predicted volume. */
     void beginSubstep(Particles p, double h) {
         this.h = h;
@@ -211,7 +216,7 @@ public final class EnclosedGas {
             alphaTilde = 0;
             return;
         }
-        double vc = Math.max(volumeAndGradient(p.x, null), VOLUME_FLOOR * restVolume);
+        double vc = floored(volumeAndGradient(p.x, null));
         double alpha = vc * vc / amount;
         // Newton's step on U is 2V_c − p₀V_c²/nRT, which falls below 0 for a gas blown past twice its volume in the air
         // (nRT/V_c < p₀/2): damped to halving or doubling the volume in a substep (a fuzzed 50 µm pillow at 3·10¹⁴ Pa
@@ -235,7 +240,7 @@ public final class EnclosedGas {
         double dLambda = (-c - alphaTilde * lambda) / denominator;
         // V is cubic in the positions: a projection whose linear change reaches the volume itself can overshoot through
         // zero (a spiky surface), so one projection changes it by half the current volume at most, to first order.
-        double most = 0.5 * Math.max(Math.abs(c + goal), VOLUME_FLOOR * restVolume) / weighted;
+        double most = 0.5 * floored(Math.abs(c + goal)) / weighted;
         dLambda = Math.max(-most, Math.min(most, dLambda));
         lambda += dLambda;
         for (int l = 0; l < vertex.length; l++) {
@@ -256,7 +261,7 @@ public final class EnclosedGas {
         for (int l = 0; l < vertex.length; l++) {
             int i = vertex[l];
             if (!isGas()) { held[i] = true; continue; }
-            double s = (ambient - amount / Math.max(v, VOLUME_FLOOR * restVolume)) / 6;
+            double s = (ambient - amount / floored(v)) / 6;
             for (int a = 0; a < 3; a++) residual[3 * i + a] += s * gradient[3 * l + a];
         }
     }

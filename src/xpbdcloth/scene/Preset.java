@@ -81,9 +81,7 @@ public final class Preset {
         public xpbdcloth.engine.EnclosedGas fill(xpbdcloth.engine.Particles rest, int[] triangles) {
             if (!Double.isNaN(gauge)) return xpbdcloth.engine.EnclosedGas.ofGauge(rest, triangles, gauge, ambient);
             if (!Double.isNaN(moles)) return xpbdcloth.engine.EnclosedGas.ofGas(rest, triangles, moles * xpbdcloth.engine.EnclosedGas.GAS_CONSTANT * temperature, ambient);
-            xpbdcloth.engine.EnclosedGas held = xpbdcloth.engine.EnclosedGas.ofVolume(rest, triangles, 1);
-            held.setTargetVolume(volumeRatio * held.restVolume());
-            return held;
+            return xpbdcloth.engine.EnclosedGas.ofHeldVolume(rest, triangles, volumeRatio);
         }
     }
 

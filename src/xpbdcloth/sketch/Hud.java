@@ -285,7 +285,10 @@ final class Hud {
         }
     }
 
-    /** The crossing count's text, counted every {@link #CROSSINGS_EVERY} formats (a count of a 64² cloth takes 10–20 ms). */
+    /**
+     * The crossing count's text, counted every {@link #CROSSINGS_EVERY} formats: a count costs milliseconds on the
+     * shipped cloths (measured in docs/contacts.md), too much for every frame.
+     */
     private String crossings = "";
     private int formatsSinceCrossings = Integer.MAX_VALUE;
     private xpbdcloth.scene.Scene crossingsCountedFor;
