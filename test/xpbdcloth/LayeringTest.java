@@ -55,6 +55,14 @@ class LayeringTest {
         assertEquals(List.of(), violations(Path.of("src/xpbdcloth/mesh"), project));
     }
 
+    /** Garment patterns are geometry: outlines, their meshing (JTS) and stitches, on meshes and nothing above. */
+    @Test
+    void patternImportsOnlyMeshes() throws IOException {
+        String[] above = {"xpbdcloth.engine", "xpbdcloth.fabric", "xpbdcloth.scene", "xpbdcloth.usd", "xpbdcloth.fit", "xpbdcloth.sketch",
+                "xpbdcloth.experiments", "xpbdcloth.tools", "xpbdcloth.library", "processing."};
+        assertEquals(List.of(), violations(Path.of("src/xpbdcloth/pattern"), above));
+    }
+
     /** Linear algebra is below the engine too: matrices and their solvers, nothing of cloth. */
     @Test
     void linearAlgebraImportsNothingOfTheProject() throws IOException {

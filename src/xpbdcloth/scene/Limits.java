@@ -145,4 +145,15 @@ public final class Limits {
     public static final Range ROTATION = new Range(-360, 360, "degrees");
     /** Distance within which a mesh file's vertices are welded, in the file's units. */
     public static final Range WELD = new Range(0, 1, "");
+
+    /** A garment pattern's target edge length (its panels' triangles). */
+    public static final Range PATTERN_EDGE = new Range(1e-3, 1, "m");
+    /** A pattern's coordinates, an arc's bulge, a Bézier curve's control points (metres in the pattern plane). */
+    public static final Range PATTERN_COORDINATE = new Range(-100, 100, "m");
+    /** A position on a panel's outline: corner k is k, 1.5 is halfway along edge 1 (the corner count is checked by the pattern). */
+    public static final Range PATTERN_POSITION = new Range(0, 1000, "");
+    /** The radius of the cylinder a panel is wrapped onto (0: flat). */
+    public static final Range WRAP_RADIUS = new Range(0, 100, "m");
+    /** Vertices of a meshed pattern, all panels (the relaxation takes about a second per ten thousand). */
+    public static final Range PATTERN_VERTICES = new Range(3, 50_000, "vertices");
 }

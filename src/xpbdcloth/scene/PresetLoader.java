@@ -1,9 +1,6 @@
 package xpbdcloth.scene;
 
-import com.fasterxml.jackson.core.JsonParser;
-import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
@@ -42,9 +39,6 @@ public final class PresetLoader {
     /** The presets that ship with the project, in the order the sketch offers them. */
     public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth", "table", "arm", "drop-fold", "fabric", "flag-fabric", "drape", "denim-fold", "mannequin-poncho", "mannequin-turn", "torus-spin", "crease", "pillow", "balloon");
 
-    private static final ObjectMapper JSON = new ObjectMapper()
-            .enable(JsonParser.Feature.STRICT_DUPLICATE_DETECTION);
-
     private PresetLoader() {}
 
     /** A built-in preset by name (from the jar), e.g. "hanging". */
@@ -67,13 +61,6 @@ public final class PresetLoader {
         } catch (IOException e) {
             throw new MeshFileException(name, 0, "cannot be read: " + e.getMessage());
         }
-    }
-
-    /** Jackson's message without its advice to switch on parser features, which a preset author cannot. */
-    static String inOurWords(String jackson) {
-        if (jackson.contains("ALLOW_NON_NUMERIC_NUMBERS"))
-            return "NaN and Infinity are not numbers in JSON (and no field takes them): give a finite number";
-        return jackson.replaceAll(":? *(?:enable|use) `?JsonReadFeature\\.[A-Z_]+`?[^\\n]*", "");
     }
 
     /** A body file beside the built-in presets (in the jar): an OBJ or a USD text file. */
@@ -174,7 +161,7 @@ public final class PresetLoader {
         Path path = Path.of(nameOrPath);
         if (!Files.isRegularFile(path)) return null;
         String text = readGuarded(path);
-        return readJson(nameOrPath, text).has("fabrics") ? parseCatalogue(nameOrPath, text) : null;
+        return JsonFields.readJson(nameOrPath, text).has("fabrics") ? parseCatalogue(nameOrPath, text) : null;
     }
 
     /** The bytes as UTF-8 text, or an error saying where they stop being UTF-8. */
@@ -237,8 +224,8 @@ public final class PresetLoader {
     /** Parses a fabric catalogue ({@code fabrics.json}); {@code file} names it in errors. */
     static List<Fabric> parseCatalogue(String file, String text) {
         Reader reader = new Reader(file, null);
-        JsonNode json = readJson(file, text);
-        return reader.whole(() -> reader.catalogue(new Node(json, "")));
+        JsonNode json = JsonFields.readJson(file, text);
+        return reader.whole(() -> reader.catalogue(new JsonFields.Node(json, "")));
     }
 
     /** Parses preset text; {@code file} names it in errors; a mesh file is looked up beside it. */
@@ -249,77 +236,18 @@ public final class PresetLoader {
 
     static Preset parse(String file, String text, MeshFiles meshes) {
         Reader reader = new Reader(file, meshes);
-        JsonNode json = readJson(file, text);
-        return reader.whole(() -> reader.preset(new Node(json, "")));
+        JsonNode json = JsonFields.readJson(file, text);
+        return reader.whole(() -> reader.preset(new JsonFields.Node(json, "")));
     }
 
-    private static JsonNode readJson(String file, String text) {
-        if (text.isBlank()) throw new PresetException(file, "(file)", "is empty");
-        try {
-            return JSON.readerFor(JsonNode.class).with(com.fasterxml.jackson.databind.DeserializationFeature.FAIL_ON_TRAILING_TOKENS).readValue(text);
-        } catch (JsonProcessingException e) {
-            String where = e.getLocation() == null ? "" : " at line " + e.getLocation().getLineNr() + " column " + e.getLocation().getColumnNr();
-            throw new PresetException(file, "(syntax)", "not valid JSON" + where + ": " + inOurWords(e.getOriginalMessage()));
-        }
-    }
-
-    /** A JSON value and its path, for messages. */
-    private static final class Node {
-        final JsonNode json;
-        final String path;
-
-        Node(JsonNode json, String path) {
-            this.json = json;
-            this.path = path;
-        }
-
-        String child(String name) { return path.isEmpty() ? name : path + "." + name; }
-    }
-
-    private static final class Reader {
-        final String file;
+    private static final class Reader extends JsonFields {
         final MeshFiles meshes;
 
         Reader(String file, MeshFiles meshes) {
-            this.file = file;
+            super(file);
             this.meshes = meshes;
         }
 
-        /**
-         * Problems found so far that let reading go on: a number or a count outside its range is noted and read
-         * as the nearest value inside it, so the fields after it are still checked and a file's every problem
-         * is reported at once, not one per attempt.
-         */
-        final List<PresetException> found = new ArrayList<>();
-
-        PresetException fail(String field, String problem) {
-            return new PresetException(file, field.isEmpty() ? "(root)" : field, problem);
-        }
-
-        /** The problems found, as one exception (itself when there is one). */
-        PresetException everything() {
-            return found.size() == 1 ? found.get(0) : new PresetException(found);
-        }
-
-        /** Reads a whole file: everything it reads, or every problem found in it at once. */
-        <T> T whole(java.util.function.Supplier<T> read) {
-            T t = part(read);
-            if (!found.isEmpty()) throw everything();
-            return t;
-        }
-
-        /**
-         * Reads a part of the preset that does not depend on another: a problem that stops it is noted and the
-         * part comes back null, so the parts after it are still read.
-         */
-        <T> T part(java.util.function.Supplier<T> read) {
-            try {
-                return read.get();
-            } catch (PresetException e) {
-                found.addAll(e.all());
-                return null;
-            }
-        }
 
         /** The preset, or null when a part it needs could not be read (its problems are in {@link #found}). */
         Preset preset(Node root) {

@@ -1,0 +1,291 @@
+package xpbdcloth.pattern;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import xpbdcloth.mesh.ClothMesh;
+
+/**
+ * A pattern cut into triangles: each panel meshed on its own ({@link PanelMesher}) at a target edge length,
+ * placed around the body, with its stitches: the vertex pairs each seam will pull together.
+ *
+ * <p>The outlines are sampled first, all together, because a seam's two sides must have matching vertices:
+ * a seam gets round(mean length / edge) stitches at equal fractions of each side's length (so an eased side,
+ * the shorter one, gets shorter segments), and a corner inside a stretch moves the nearest stitch onto it
+ * (a corner is never cut off). Outline between seams is cut into segments near the target length, every
+ * corner kept. Vertices are numbered panel by panel, each panel's outline samples first.
+ */
+public final class PatternMesh {
+    public final Pattern pattern;
+    /** The target edge length (m). */
+    public final double edge;
+    /** Placed positions (x, y, z per vertex). */
+    private final double[] positions;
+    /** Pattern-plane positions (x, y per vertex): the flat rest shape. */
+    private final double[] flat;
+    /** Fabric coordinates (u along the grain, v across; per vertex). */
+    private final double[] uvs;
+    private final int[] triangles;
+    /** First vertex and first triangle (index into triangles / 3) of each panel, and the totals last. */
+    private final int[] panelVertices, panelTriangles;
+    /** Per seam: the stitched vertex pairs (a, b, a, b, …), start to end. */
+    private final Map<String, int[]> stitches = new LinkedHashMap<>();
+
+    private PatternMesh(Pattern pattern, double edge, double[] positions, double[] flat, double[] uvs, int[] triangles, int[] panelVertices, int[] panelTriangles) {
+        this.pattern = pattern;
+        this.edge = edge;
+        this.positions = positions;
+        this.flat = flat;
+        this.uvs = uvs;
+        this.triangles = triangles;
+        this.panelVertices = panelVertices;
+        this.panelTriangles = panelTriangles;
+    }
+
+    /** A stitch position on a panel's outline: arc length from corner 0, and the seam stitches that land there. */
+    private static final class Sample {
+        double along;
+        final List<int[]> stitches = new ArrayList<>();  // (seam index, side 0|1, stitch k)
+
+        Sample(double along) { this.along = along; }
+    }
+
+    /**
+     * @param edge target edge length (m), at most a quarter of the smallest panel's outline length
+     * @throws IllegalArgumentException naming the panel when an edge length cannot mesh it
+     */
+    public static PatternMesh of(Pattern pattern, double edge) {
+        if (!(edge > 0) || Double.isInfinite(edge)) throw new IllegalArgumentException("edge length must be > 0 m, was " + edge);
+        List<Panel> panels = pattern.panels();
+        Map<String, List<Sample>> samples = new LinkedHashMap<>();
+        for (Panel p : panels) samples.put(p.name, new ArrayList<>());
+        List<Seam> seams = pattern.seams();
+        int[] stitchCount = new int[seams.size()];
+        for (int s = 0; s < seams.size(); s++) {
+            Seam seam = seams.get(s);
+            double[] fractions = stitchFractions(pattern, seam, edge);
+            stitchCount[s] = fractions.length;
+            Stretch[] sides = {seam.a, seam.b};
+            for (int side = 0; side < 2; side++) {
+                Outline o = pattern.panel(sides[side].panel).outline;
+                for (int k = 0; k < fractions.length; k++) {
+                    Sample x = new Sample(sides[side].arcLengthAt(o, fractions[k]));
+                    x.stitches.add(new int[] {s, side, k});
+                    samples.get(sides[side].panel).add(x);
+                }
+            }
+        }
+
+        List<double[]> positions = new ArrayList<>(), flat = new ArrayList<>(), uvs = new ArrayList<>();
+        List<int[]> triangles = new ArrayList<>();
+        int[] panelVertices = new int[panels.size() + 1], panelTriangles = new int[panels.size() + 1];
+        int[][][] stitchVertex = new int[seams.size()][2][];
+        for (int s = 0; s < seams.size(); s++) { stitchVertex[s][0] = new int[stitchCount[s]]; stitchVertex[s][1] = new int[stitchCount[s]]; }
+        double[] p2 = new double[2], p3 = new double[6], uv = new double[2];
+        for (int pi = 0; pi < panels.size(); pi++) {
+            Panel panel = panels.get(pi);
+            Outline o = panel.outline;
+            List<Sample> outline = sampleOutline(panel, samples.get(panel.name), pattern, edge);
+            boolean reverse = !o.counterClockwise();
+            int nb = outline.size();
+            double[] boundary = new double[2 * nb];
+            for (int i = 0; i < nb; i++) {
+                o.pointAt(outline.get(reverse ? nb - 1 - i : i).along, p2);
+                boundary[2 * i] = p2[0]; boundary[2 * i + 1] = p2[1];
+            }
+            PanelMesher.Result mesh;
+            try {
+                mesh = PanelMesher.mesh(boundary, edge);
+            } catch (RuntimeException e) {
+                throw new IllegalArgumentException("panel \"" + panel.name + "\" could not be meshed at edge " + edge + " m: " + e.getMessage(), e);
+            }
+            int base = positions.size();
+            panelVertices[pi] = base;
+            panelTriangles[pi] = triangles.size();
+            var env = o.polygon(8).getEnvelopeInternal();
+            double cx = (env.getMinX() + env.getMaxX()) / 2, cy = (env.getMinY() + env.getMaxY()) / 2;
+            for (int i = 0; i < mesh.pointCount(); i++) {
+                double x = mesh.points[2 * i], y = mesh.points[2 * i + 1];
+                panel.placement.place(x, y, cx, cy, 0, 0, p3);
+                positions.add(new double[] {p3[0], p3[1], p3[2]});
+                flat.add(new double[] {x, y});
+                panel.fabricCoordinates(x, y, uv);
+                uvs.add(uv.clone());
+            }
+            for (int t = 0; t < mesh.triangles.length; t += 3)
+                triangles.add(new int[] {base + mesh.triangles[t], base + mesh.triangles[t + 1], base + mesh.triangles[t + 2]});
+            for (int i = 0; i < nb; i++)
+                for (int[] st : outline.get(i).stitches)
+                    stitchVertex[st[0]][st[1]][st[2]] = base + (reverse ? nb - 1 - i : i);
+        }
+        panelVertices[panels.size()] = positions.size();
+        panelTriangles[panels.size()] = triangles.size();
+
+        PatternMesh m = new PatternMesh(pattern, edge, flatten(positions, 3), flatten(flat, 2), flatten(uvs, 2),
+                flattenIndices(triangles, 3), panelVertices, panelTriangles);
+        for (int s = 0; s < seams.size(); s++) {
+            int[] pairs = new int[2 * stitchCount[s]];
+            for (int k = 0; k < stitchCount[s]; k++) { pairs[2 * k] = stitchVertex[s][0][k]; pairs[2 * k + 1] = stitchVertex[s][1][k]; }
+            m.stitches.put(seams.get(s).name, pairs);
+        }
+        return m;
+    }
+
+    /**
+     * The fractions (0 … 1 of each side's length) at which a seam is stitched: uniform, round(mean length /
+     * edge) segments, with the stitch nearest each corner inside either stretch moved onto it (or one added
+     * when that stitch is taken by another corner).
+     */
+    private static double[] stitchFractions(Pattern pattern, Seam seam, double edge) {
+        Outline oa = pattern.panel(seam.a.panel).outline, ob = pattern.panel(seam.b.panel).outline;
+        double la = seam.a.length(oa), lb = seam.b.length(ob);
+        int n = Math.max(1, (int) Math.round((la + lb) / 2 / edge));
+        List<Double> fractions = new ArrayList<>();
+        for (int k = 0; k <= n; k++) fractions.add((double) k / n);
+        boolean[] moved = new boolean[n + 1];
+        List<Double> extra = new ArrayList<>();
+        for (double c : innerCorners(seam.a, oa)) extra.add(c);
+        for (double c : innerCorners(seam.b, ob)) extra.add(c);
+        List<Double> added = new ArrayList<>();
+        for (double c : extra) {
+            int k = (int) Math.round(c * n);
+            if (k > 0 && k < n && !moved[k]) { fractions.set(k, c); moved[k] = true; }
+            else added.add(c);
+        }
+        fractions.addAll(added);
+        double[] out = fractions.stream().mapToDouble(Double::doubleValue).sorted().toArray();
+        // Two corners at the same fraction (both sides cornered alike) are one stitch.
+        int w = 1;
+        for (int i = 1; i < out.length; i++) if (out[i] - out[w - 1] > 1e-9) out[w++] = out[i];
+        return Arrays.copyOf(out, w);
+    }
+
+    /** Fractions of the stretch's length at which it passes a corner of its outline (ends excluded). */
+    private static List<Double> innerCorners(Stretch st, Outline o) {
+        List<Double> out = new ArrayList<>();
+        double length = st.length(o), start = o.arcLength(st.from), total = o.length();
+        for (double corner : o.cornerArcLengths()) {
+            double d = st.backward ? start - corner : corner - start;
+            d = ((d % total) + total) % total;
+            if (d > 1e-9 * total && d < length - 1e-9 * total) out.add(d / length);
+        }
+        return out;
+    }
+
+    /**
+     * A panel's outline samples in order from corner 0: its seams' stitches, its corners, and between them,
+     * where no seam runs, segments near the target length.
+     */
+    private static List<Sample> sampleOutline(Panel panel, List<Sample> stitched, Pattern pattern, double edge) {
+        Outline o = panel.outline;
+        double total = o.length(), tolerance = 1e-9 * total;
+        List<Sample> all = new ArrayList<>(stitched);
+        List<double[]> sewn = new ArrayList<>();  // (start, length) of each stretch on this panel
+        for (Seam s : pattern.seams())
+            for (Stretch st : new Stretch[] {s.a, s.b})
+                if (st.panel.equals(panel.name)) {
+                    double l = st.length(o);
+                    sewn.add(new double[] {st.backward ? st.arcLengthAt(o, 1) : st.arcLengthAt(o, 0), l});
+                }
+        List<Double> breaks = new ArrayList<>();
+        for (double c : o.cornerArcLengths()) breaks.add(c);
+        for (double[] s : sewn) { breaks.add(s[0]); breaks.add((s[0] + s[1]) % total); }
+        breaks.sort(null);
+        for (int i = 0; i < breaks.size(); i++) {
+            double a = breaks.get(i), b = i + 1 < breaks.size() ? breaks.get(i + 1) : breaks.get(0) + total;
+            all.add(new Sample(a));
+            if (b - a <= tolerance || isSewn((a + b) / 2, sewn, total)) continue;
+            int pieces = Math.max(1, (int) Math.round((b - a) / edge));
+            for (int j = 1; j < pieces; j++) all.add(new Sample((a + (b - a) * j / pieces) % total));
+        }
+        // A stitch computed onto a corner lands there to rounding; the corner's own position is the exact one.
+        double[] corners = o.cornerArcLengths();
+        for (Sample s : all) {
+            if (s.along > total - tolerance) s.along = 0;
+            for (double c : corners) if (Math.abs(s.along - c) <= tolerance) s.along = c;
+        }
+        all.sort((x, y) -> Double.compare(x.along, y.along));
+        List<Sample> merged = new ArrayList<>();
+        for (Sample s : all) {
+            Sample last = merged.isEmpty() ? null : merged.get(merged.size() - 1);
+            if (last != null && s.along - last.along <= tolerance) last.stitches.addAll(s.stitches);
+            else merged.add(s);
+        }
+        return merged;
+    }
+
+    private static boolean isSewn(double along, List<double[]> sewn, double total) {
+        for (double[] s : sewn) {
+            double d = ((along - s[0]) % total + total) % total;
+            if (d < s[1]) return true;
+        }
+        return false;
+    }
+
+    private static double[] flatten(List<double[]> rows, int width) {
+        double[] out = new double[rows.size() * width];
+        for (int i = 0; i < rows.size(); i++) System.arraycopy(rows.get(i), 0, out, i * width, width);
+        return out;
+    }
+
+    private static int[] flattenIndices(List<int[]> rows, int width) {
+        int[] out = new int[rows.size() * width];
+        for (int i = 0; i < rows.size(); i++) System.arraycopy(rows.get(i), 0, out, i * width, width);
+        return out;
+    }
+
+    public int vertexCount() { return positions.length / 3; }
+
+    public int triangleCount() { return triangles.length / 3; }
+
+    public double[] positions() { return positions.clone(); }
+
+    /** The flat rest shape: each vertex where it lies on its panel's pattern (x, y). */
+    public double[] flatPositions() { return flat.clone(); }
+
+    /** Fabric coordinates per vertex (u along the grain, v across). */
+    public double[] fabricCoordinates() { return uvs.clone(); }
+
+    public int[] triangles() { return triangles.clone(); }
+
+    /** Vertices [first, last) of the i-th panel (in the pattern's order). */
+    public int[] panelVertexRange(int i) { return new int[] {panelVertices[i], panelVertices[i + 1]}; }
+
+    /** Triangles [first, last) of the i-th panel. */
+    public int[] panelTriangleRange(int i) { return new int[] {panelTriangles[i], panelTriangles[i + 1]}; }
+
+    /** The seam's stitches: vertex pairs (side a, side b), start to end. */
+    public int[] stitches(String seam) { return stitches.get(seam).clone(); }
+
+    /**
+     * As a cloth mesh: the placed positions, the triangles with the fabric coordinates as their texture
+     * coordinates, and a vertex group per panel (its name) and per seam ("seam NAME", both sides), spaces
+     * in names written as underscores (an OBJ group name is one word).
+     */
+    public ClothMesh toClothMesh() {
+        int[][] faces = new int[triangleCount()][];
+        double[][] faceUVs = new double[faces.length][];
+        for (int t = 0; t < faces.length; t++) {
+            faces[t] = Arrays.copyOfRange(triangles, 3 * t, 3 * t + 3);
+            faceUVs[t] = new double[6];
+            for (int k = 0; k < 3; k++) {
+                faceUVs[t][2 * k] = uvs[2 * faces[t][k]];
+                faceUVs[t][2 * k + 1] = uvs[2 * faces[t][k] + 1];
+            }
+        }
+        Map<String, int[]> groups = new LinkedHashMap<>();
+        List<Panel> panels = pattern.panels();
+        for (int i = 0; i < panels.size(); i++) {
+            int[] range = panelVertexRange(i);
+            int[] g = new int[range[1] - range[0]];
+            for (int v = 0; v < g.length; v++) g[v] = range[0] + v;
+            groups.put(oneWord(panels.get(i).name), g);
+        }
+        for (Map.Entry<String, int[]> e : stitches.entrySet()) groups.put(oneWord("seam " + e.getKey()), e.getValue().clone());
+        return ClothMesh.withTextureCoordinates(positions, faces, faceUVs, null, groups);
+    }
+
+    private static String oneWord(String name) { return name.trim().replaceAll("\\s+", "_"); }
+}
