@@ -19,5 +19,7 @@ public enum ConstraintFamily {
     /** A particle held at a target point, e.g. by the mouse. */
     ATTACHMENT,
     /** The gas, or the held volume, inside a closed cloth ({@link EnclosedGas}): one row over the whole surface. */
-    PRESSURE
+    PRESSURE,
+    /** A garment's seams: stitches pulled shut and held ({@link StitchBlock}), and the bending across them once closed ({@link Sewing}). */
+    SEAM
 }

@@ -102,12 +102,21 @@ public final class CrossingGuard implements Team.Job {
     private final double[] sphere, edgeMove, triangleMove;
 
     private long events, unresolved, passes;
+    /** Each particle's representative: features with one in common are neighbours, never an event. */
+    private final int[] same;
 
     /**
      * @param triangles the cloth's triangles, 3 particle indices each
      * @param rest      the rest positions, xyz interleaved (the hierarchy's shape; refitted as the cloth moves)
      */
-    public CrossingGuard(int[] triangles, double[] rest) {
+    public CrossingGuard(int[] triangles, double[] rest) { this(triangles, rest, null); }
+
+    /**
+     * As above, with particles {@code same[i] == same[j]} taken as one (a garment's stitched pairs, which its
+     * sewing welds): a vertex is not tested against a face, nor an edge against an edge, that has it. Null:
+     * each particle its own.
+     */
+    public CrossingGuard(int[] triangles, double[] rest, int[] same) {
         if (triangles == null || triangles.length % 3 != 0)
             throw new IllegalArgumentException("triangles must hold 3 particle indices each, had " + (triangles == null ? "null" : triangles.length + " indices"));
         if (rest == null || rest.length % 3 != 0)
@@ -117,6 +126,13 @@ public final class CrossingGuard implements Team.Job {
             if (triangles[k] < 0 || triangles[k] >= particles)
                 throw new IllegalArgumentException("triangles[" + k + "] must be a particle in [0, " + particles + "), was " + triangles[k]);
         this.triangles = triangles.clone();
+        if (same != null && same.length != particles)
+            throw new IllegalArgumentException("same must name a particle per particle (" + particles + "), had " + same.length);
+        this.same = new int[particles];
+        for (int i = 0; i < particles; i++) {
+            this.same[i] = same == null ? i : same[i];
+            if (this.same[i] < 0 || this.same[i] >= particles) throw new IllegalArgumentException("same[" + i + "] must be a particle in [0, " + particles + "), was " + this.same[i]);
+        }
         final TriangleEdges numbered = TriangleEdges.of(this.triangles, particles);
         edges = numbered.ends();
         triangleEdges = numbered.edgeOfSides();
@@ -291,7 +307,8 @@ public final class CrossingGuard implements Team.Job {
             final int[] candidates = sh.query.found();
             for (int c = 0; c < m; c++) {
                 final int t = candidates[c];
-                if (i == triangles[3 * t] || i == triangles[3 * t + 1] || i == triangles[3 * t + 2] || !sh.overlaps(triangleReach, t)) continue;
+                final int si = same[i];
+                if (si == same[triangles[3 * t]] || si == same[triangles[3 * t + 1]] || si == same[triangles[3 * t + 2]] || !sh.overlaps(triangleReach, t)) continue;
                 sh.addFace(i, t);
             }
         }
@@ -299,7 +316,7 @@ public final class CrossingGuard implements Team.Job {
         final int edgeCount = edges.length / 2;
         final int[] edgeSeen = sh.edgeSeen;
         for (int e = (int) ((long) edgeCount * id / count), last = (int) ((long) edgeCount * (id + 1) / count); e < last; e++) {
-            final int p = edges[2 * e], q = edges[2 * e + 1];
+            final int p = edges[2 * e], q = edges[2 * e + 1], sp = same[p], sq = same[q];
             if (++sh.edgeStamp == Integer.MAX_VALUE) { Arrays.fill(edgeSeen, 0); sh.edgeStamp = 1; }
             final int stamp = sh.edgeStamp;
             final int m = sh.reachQuery(p, q);
@@ -312,7 +329,8 @@ public final class CrossingGuard implements Team.Job {
                     if (f <= e || edgeSeen[f] == stamp) continue;
                     edgeSeen[f] = stamp;
                     final int r = edges[2 * f], s = edges[2 * f + 1];
-                    if (r == p || r == q || s == p || s == q || !sh.nearReach(r, s, gap)) continue;
+                    final int sr = same[r], ss = same[s];
+                    if (sr == sp || sr == sq || ss == sp || ss == sq || !sh.nearReach(r, s, gap)) continue;
                     sh.addEdgePair(e, f);
                 }
             }

@@ -58,6 +58,24 @@ public final class DihedralBlock extends ConstraintBlock {
         return i;
     }
 
+    /**
+     * Adds a bend that is flat at rest (θ₀ = 0) on edge (e0, e1) between triangles given by their rest shape,
+     * (A₀ + A₁)/|e|², not by where the particles are now: a hinge across a seam still open, whose two
+     * triangles meet only once it is sewn. It starts with the given compliance (see {@link #setBendingStiffness}).
+     */
+    public int addFlat(int o0, int o1, int e0, int e1, double restAreaOverEdgeSquared, double compliance) {
+        int[] ids = {o0, o1, e0, e1};
+        for (int a = 0; a < 4; a++) for (int b = a + 1; b < 4; b++)
+            if (ids[a] == ids[b]) throw new IllegalArgumentException("particles must be distinct, was " + o0 + ", " + o1 + ", " + e0 + ", " + e1);
+        Check.positive("restAreaOverEdgeSquared", restAreaOverEdgeSquared);
+        int i = newSlot();
+        System.arraycopy(ids, 0, particles, 4 * i, 4);
+        areaOverEdgeSquared[i] = restAreaOverEdgeSquared;
+        restAngle[i] = 0;
+        setCompliance(i, compliance);
+        return i;
+    }
+
     /** Bending stiffness B (N·m) of constraint i: sets its compliance. */
     public void setBendingStiffness(int i, double bendingStiffness) {
         Check.inRange("bendingStiffness", bendingStiffness, Double.MIN_NORMAL, 1e6);

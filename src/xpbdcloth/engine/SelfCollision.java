@@ -87,12 +87,20 @@ public final class SelfCollision extends Collider implements Team.Job {
      * @param triangles the cloth's triangles (3 particle indices each), or null for particle pairs alone
      */
     public SelfCollision(double[] restPositions, int[] triangles, double thickness, double staticFriction, double kineticFriction) {
+        this(restPositions, triangles, null, thickness, staticFriction, kineticFriction);
+    }
+
+    /**
+     * As above, the guard taking particles {@code same[i] == same[j]} as one ({@link CrossingGuard}): a garment
+     * whose stitched pairs are welded. The particle pairs need no such map: give such pairs one rest position.
+     */
+    public SelfCollision(double[] restPositions, int[] triangles, int[] same, double thickness, double staticFriction, double kineticFriction) {
         super(0, staticFriction, kineticFriction);
         if (restPositions == null || restPositions.length % 3 != 0)
             throw new IllegalArgumentException("restPositions must hold x, y, z per particle, had " + (restPositions == null ? "null" : restPositions.length + " numbers"));
         this.rest = restPositions.clone();
         this.thickness = Check.inRange("thickness", thickness, Double.MIN_NORMAL, EngineRange.MAX_RADIUS);
-        this.guard = triangles == null ? null : new CrossingGuard(triangles, restPositions);
+        this.guard = triangles == null ? null : new CrossingGuard(triangles, restPositions, same);
     }
 
     /** The continuous triangle guard, or null when only particle pairs keep the cloth from itself. */

@@ -2,6 +2,7 @@ package xpbdcloth.fabric;
 
 import java.util.List;
 import xpbdcloth.engine.ConstraintBlock;
+import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.DihedralBlock;
 import xpbdcloth.engine.MembraneBlock;
 import xpbdcloth.engine.QuadraticBendBlock;
@@ -30,7 +31,7 @@ public final class FabricSwap {
                     m.setMaterial(t, fabric.membrane);
                     area += m.area(t);
                 }
-            } else if (b instanceof DihedralBlock) {
+            } else if (b instanceof DihedralBlock && b.family() != ConstraintFamily.SEAM) {  // a seam's hinges: Sewing.useBendingStiffness
                 DihedralBlock d = (DihedralBlock) b;
                 for (int i = 0; i < d.count(); i++) d.setBendingStiffness(i, fabric.bendingStiffness);
             } else if (b instanceof QuadraticBendBlock) {

@@ -17,7 +17,13 @@ public final class TriangleIntersections {
     private TriangleIntersections() {}
 
     /** Pairs of vertex-disjoint triangles of {@code t} (3 indices each) over positions {@code x} that intersect. */
-    public static int count(double[] x, int[] t) {
+    public static int count(double[] x, int[] t) { return count(x, t, null); }
+
+    /**
+     * As {@link #count(double[], int[])}, with vertices {@code same[a] == same[b]} taken as one (a garment's
+     * stitched pairs: triangles that meet across a seam are neighbours, not a crossing); null: each its own.
+     */
+    public static int count(double[] x, int[] t, int[] same) {
         int n = t.length / 3;
         if (n < 2) return 0;
         double mean = 0;
@@ -55,7 +61,7 @@ public final class TriangleIntersections {
                     int j = list[s];
                     if (j <= i || seen[j] == i) continue;
                     seen[j] = i;
-                    if (!overlap(boxes[i], boxes[j]) || shareVertex(t, i, j)) continue;
+                    if (!overlap(boxes[i], boxes[j]) || shareVertex(t, i, j, same)) continue;
                     if (intersect(x, t, i, j)) found++;
                 }
         return found;
@@ -76,8 +82,12 @@ public final class TriangleIntersections {
         return true;
     }
 
-    private static boolean shareVertex(int[] t, int i, int j) {
-        for (int a = 0; a < 3; a++) for (int b = 0; b < 3; b++) if (t[3 * i + a] == t[3 * j + b]) return true;
+    private static boolean shareVertex(int[] t, int i, int j, int[] same) {
+        for (int a = 0; a < 3; a++)
+            for (int b = 0; b < 3; b++) {
+                int u = t[3 * i + a], v = t[3 * j + b];
+                if (u == v || same != null && same[u] == same[v]) return true;
+            }
         return false;
     }
 

@@ -41,6 +41,18 @@ public final class Pattern {
                         throw new IllegalArgumentException("seam \"" + s.name + "\": stretch " + st + " is sewn twice (it overlaps seam \"" + c.seam + "\")");
                 covered.add(new Covered(p.name, s.name, start, length));
             }
+        for (Seam s : seams)
+            if (turn(s.a) == turn(s.b))
+                throw new IllegalArgumentException("seam \"" + s.name + "\" sews the face of one panel to the back of the other (both stretches run the same way round their panels' outlines): walk one of them the other way (\"backward\")");
+    }
+
+    /**
+     * +1 when a stretch runs counter-clockwise in its pattern plane, −1 clockwise. Two panels sewn face to face
+     * (their pattern planes' +z the same side of the garment) meet along edges that run opposite ways, as
+     * the triangles of one consistently wound surface do.
+     */
+    private int turn(Stretch st) {
+        return (st.backward ? -1 : 1) * (panels.get(st.panel).outline.counterClockwise() ? 1 : -1);
     }
 
     public List<Panel> panels() { return Collections.unmodifiableList(new ArrayList<>(panels.values())); }

@@ -260,6 +260,69 @@ public final class PatternMesh {
     public int[] stitches(String seam) { return stitches.get(seam).clone(); }
 
     /**
+     * Each vertex's representative once every seam is closed: stitched vertices (a corner where three panels
+     * meet is stitched twice over) share the smallest index among them; every other vertex is its own.
+     */
+    public int[] welded() {
+        int[] root = new int[vertexCount()];
+        for (int v = 0; v < root.length; v++) root[v] = v;
+        for (int[] pairs : stitches.values())
+            for (int k = 0; k < pairs.length; k += 2) {
+                int a = find(root, pairs[k]), b = find(root, pairs[k + 1]);
+                if (a != b) root[Math.max(a, b)] = Math.min(a, b);
+            }
+        for (int v = 0; v < root.length; v++) root[v] = find(root, v);
+        return root;
+    }
+
+    private static int find(int[] root, int v) {
+        while (root[v] != v) v = root[v] = root[root[v]];
+        return v;
+    }
+
+    /**
+     * The hinges across the seams once closed: per pair of consecutive stitches, the two outline triangles on
+     * either side, as (o0, o1, e0, e1) with the edge e0–e1 on side a (o0's triangle wound e0, e1, o0 and o1's
+     * e1, e0, o1 counter-clockwise: a flat seam is a dihedral angle of 0); {@code restAreaOverEdgeSquared}
+     * gets (A₀ + A₁)/|e|² of each in the flat pattern (|e|² the mean of the two sides', eased or not).
+     */
+    public int[] seamHinges(List<Double> restAreaOverEdgeSquared) {
+        Map<Long, Integer> opposite = new java.util.HashMap<>();  // directed boundary edge a→b (CCW) → opposite vertex
+        Map<Long, Integer> uses = new java.util.HashMap<>();
+        for (int t = 0; t < triangles.length; t += 3)
+            for (int k = 0; k < 3; k++) {
+                int a = triangles[t + k], b = triangles[t + (k + 1) % 3];
+                uses.merge(undirected(a, b), 1, Integer::sum);
+                opposite.put((long) a << 32 | b, triangles[t + (k + 2) % 3]);
+            }
+        List<Integer> out = new ArrayList<>();
+        for (int[] pairs : stitches.values())
+            for (int k = 0; k + 3 < pairs.length; k += 2) {
+                int a0 = pairs[k], b0 = pairs[k + 1], a1 = pairs[k + 2], b1 = pairs[k + 3];
+                boolean forward = opposite.containsKey((long) a0 << 32 | a1);
+                int e0 = forward ? a0 : a1, e1 = forward ? a1 : a0, f0 = forward ? b1 : b0, f1 = forward ? b0 : b1;
+                Integer o0 = opposite.get((long) e0 << 32 | e1), o1 = opposite.get((long) f0 << 32 | f1);
+                if (o0 == null || o1 == null || uses.get(undirected(e0, e1)) != 1 || uses.get(undirected(f0, f1)) != 1)
+                    throw new IllegalStateException("stitches " + k / 2 + " and " + (k / 2 + 1) + " are not an outline edge on both sides");
+                double e2 = (flatDistance2(e0, e1) + flatDistance2(f0, f1)) / 2;
+                restAreaOverEdgeSquared.add((flatArea(o0, e0, e1) + flatArea(o1, f0, f1)) / e2);
+                out.add(o0); out.add(o1); out.add(e0); out.add(e1);
+            }
+        return out.stream().mapToInt(Integer::intValue).toArray();
+    }
+
+    private static long undirected(int a, int b) { return (long) Math.min(a, b) << 32 | Math.max(a, b); }
+
+    private double flatDistance2(int a, int b) {
+        double dx = flat[2 * a] - flat[2 * b], dy = flat[2 * a + 1] - flat[2 * b + 1];
+        return dx * dx + dy * dy;
+    }
+
+    private double flatArea(int a, int b, int c) {
+        return Math.abs((flat[2 * b] - flat[2 * a]) * (flat[2 * c + 1] - flat[2 * a + 1]) - (flat[2 * c] - flat[2 * a]) * (flat[2 * b + 1] - flat[2 * a + 1])) / 2;
+    }
+
+    /**
      * As a cloth mesh: the placed positions, the triangles with the fabric coordinates as their texture
      * coordinates, and a vertex group per panel (its name) and per seam ("seam NAME", both sides), spaces
      * in names written as underscores (an OBJ group name is one word).

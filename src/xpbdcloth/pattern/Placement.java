@@ -1,12 +1,13 @@
 package xpbdcloth.pattern;
 
 /**
- * Where a panel starts around the body, as garment CAD's arrangement points put it: the centre of the
- * panel's bounding box goes to {@code position}, its pattern plane (x right, y up, face towards +z) turned by
- * {@code rotation} (degrees about x, then y, then z, as presets place meshes). With a {@code wrap} radius the
- * panel is first rolled onto a cylinder of that radius about a vertical axis behind its face (x measured
- * along the cylinder, so the wrap stretches nothing): a front panel wraps around a torso instead of standing
- * flat before it.
+ * Where a panel starts around the body, as garment CAD's arrangement points put it. Either the centre of the
+ * panel's bounding box goes to {@code position}, its pattern plane (x right, y up, face towards +z) turned
+ * by {@code rotation} (degrees about x, then y, then z, as presets place meshes), optionally first rolled
+ * onto a cylinder of radius {@code wrap} about a vertical axis behind its face; or the panel is wrapped
+ * {@linkplain #around around} a body part: onto an elliptic cylinder about a vertical axis, its centre at an
+ * angle round it, its face outwards. Either way x is measured along the surface (the wrap stretches nothing)
+ * and y stays vertical.
  */
 public final class Placement {
     public static final Placement IDENTITY = new Placement(new double[3], new double[3], 0);
@@ -15,6 +16,10 @@ public final class Placement {
     /** Radius of the cylinder the panel is rolled onto (m), or 0 for flat. */
     private final double wrap;
     private final double[][] turn;
+    /** Around a body part: the axis's point, the ellipse's half widths along x and z, and arc length by angle (null otherwise). */
+    private final double[] centre, radii, arcAt;
+    private final double startAngle;
+    private static final int ARC_STEPS = 4096;
 
     public Placement(double[] position, double[] rotationDegrees, double wrap) {
         if (position.length != 3 || rotationDegrees.length != 3) throw new IllegalArgumentException("position and rotation must be [x, y, z]");
@@ -30,6 +35,64 @@ public final class Placement {
         double[][] ry = {{Math.cos(ay), 0, Math.sin(ay)}, {0, 1, 0}, {-Math.sin(ay), 0, Math.cos(ay)}};
         double[][] rz = {{Math.cos(az), -Math.sin(az), 0}, {Math.sin(az), Math.cos(az), 0}, {0, 0, 1}};
         turn = times(rz, times(ry, rx));
+        centre = radii = arcAt = null;
+        startAngle = 0;
+    }
+
+    private Placement(double[] centre, double[] radii, double angleDegrees, Void around) {
+        for (int i = 0; i < 3; i++)
+            if (!Double.isFinite(centre[i])) throw new IllegalArgumentException("centre must be finite, was " + java.util.Arrays.toString(centre));
+        if (!(radii[0] > 0 && radii[1] > 0) || Double.isInfinite(radii[0]) || Double.isInfinite(radii[1]))
+            throw new IllegalArgumentException("radii must be two half widths > 0 m (x, z), was " + java.util.Arrays.toString(radii));
+        if (!Double.isFinite(angleDegrees)) throw new IllegalArgumentException("angle must be finite, was " + angleDegrees);
+        this.centre = centre.clone();
+        this.radii = radii.clone();
+        this.startAngle = Math.toRadians(angleDegrees);
+        position = centre.clone();
+        rotation = new double[] {0, angleDegrees, 0};
+        wrap = 0;
+        turn = null;
+        // An ellipse has no closed-form arc length: a table of chords over a turn, the angle found by interpolation.
+        arcAt = new double[ARC_STEPS + 1];
+        double[] q = ellipse(0), r;
+        for (int k = 1; k <= ARC_STEPS; k++) {
+            r = ellipse(2 * Math.PI * k / ARC_STEPS);
+            arcAt[k] = arcAt[k - 1] + Math.hypot(r[0] - q[0], r[1] - q[1]);
+            q = r;
+        }
+    }
+
+    /**
+     * A panel wrapped round a body part: onto the elliptic cylinder about the vertical axis through
+     * {@code centre} with half widths {@code radii} (x, z), the centre of its bounding box at {@code centre}'s
+     * height and at {@code angleDegrees} round the axis (0 in front, +z; 90 at +x), its x running round the
+     * axis the way the angle grows, its face outwards.
+     */
+    public static Placement around(double[] centre, double[] radii, double angleDegrees) {
+        if (centre.length != 3 || radii.length != 2) throw new IllegalArgumentException("centre must be [x, y, z] and radii [x, z]");
+        return new Placement(centre, radii, angleDegrees, null);
+    }
+
+    /** Whether the panel is wrapped round a body part ({@link #around}). */
+    public boolean isAround() { return arcAt != null; }
+
+    private double[] ellipse(double angle) { return new double[] {radii[0] * Math.sin(angle), radii[1] * Math.cos(angle)}; }
+
+    /** The angle at arc length s from angle 0 round the ellipse (any s: whole turns wrap). */
+    private double angleAt(double s) {
+        double perimeter = arcAt[ARC_STEPS], turns = Math.floor(s / perimeter), rest = s - turns * perimeter;
+        int k = java.util.Arrays.binarySearch(arcAt, rest);
+        if (k < 0) k = -k - 2;
+        k = Math.max(0, Math.min(k, ARC_STEPS - 1));
+        double f = (rest - arcAt[k]) / (arcAt[k + 1] - arcAt[k]);
+        return 2 * Math.PI * (turns + (k + f) / ARC_STEPS);
+    }
+
+    /** Arc length round the ellipse from angle 0 to the given angle. */
+    private double arcLengthTo(double angle) {
+        double turns = Math.floor(angle / (2 * Math.PI)), t = (angle / (2 * Math.PI) - turns) * ARC_STEPS;
+        int k = Math.min((int) t, ARC_STEPS - 1);
+        return turns * arcAt[ARC_STEPS] + arcAt[k] + (t - k) * (arcAt[k + 1] - arcAt[k]);
     }
 
     public double[] position() { return position.clone(); }
@@ -43,6 +106,15 @@ public final class Placement {
      * out[0..2]; {@code direction} (dx, dy) in the pattern plane at that point goes to out[3..5] (a grain).
      */
     public void place(double x, double y, double cx, double cy, double dx, double dy, double[] out) {
+        if (arcAt != null) {
+            double a = angleAt(arcLengthTo(startAngle) + x - cx), c = Math.cos(a), s = Math.sin(a);
+            out[0] = centre[0] + radii[0] * s;
+            out[1] = centre[1] + y - cy;
+            out[2] = centre[2] + radii[1] * c;
+            double tx = radii[0] * c, tz = -radii[1] * s, l = Math.hypot(tx, tz);
+            out[3] = dx * tx / l; out[4] = dy; out[5] = dx * tz / l;
+            return;
+        }
         double u = x - cx, v = y - cy, lx, ly = v, lz, tx, ty = dy, tz;
         if (wrap > 0) {
             double a = u / wrap;

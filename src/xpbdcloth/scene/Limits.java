@@ -156,4 +156,8 @@ public final class Limits {
     public static final Range WRAP_RADIUS = new Range(0, 100, "m");
     /** Vertices of a meshed pattern, all panels (the relaxation takes about a second per ten thousand). */
     public static final Range PATTERN_VERTICES = new Range(3, 50_000, "vertices");
+    /** A garment's sewing time: its seams pulled shut over this, then closed. */
+    public static final Range SEWING_TIME = new Range(0, 60, "s");
+    /** A closed seam's bending stiffness over its fabric's (a seam allowance is stiffer). */
+    public static final Range SEAM_BENDING = new Range(1e-3, 1e3, "");
 }

@@ -42,12 +42,40 @@ public final class PatternLoader {
     public static final String FOLDER = "patterns";
 
     /** A built-in pattern by name ("skirt": data/patterns/skirt.json, in the jar), or a pattern file by path. */
-    public static Loaded byNameOrPath(String nameOrPath) throws IOException {
-        try (java.io.InputStream in = PatternLoader.class.getResourceAsStream("/presets/" + FOLDER + "/" + nameOrPath + ".json")) {
-            if (in != null && !nameOrPath.contains("/")) return parse(nameOrPath + ".json", new String(in.readAllBytes(), java.nio.charset.StandardCharsets.UTF_8));
-        }
+    public static Loaded byNameOrPath(String nameOrPath) {
+        if (isBuiltIn(nameOrPath)) return builtIn(nameOrPath);
         Path path = Path.of(nameOrPath);
         return parse(path.getFileName().toString(), PresetLoader.readGuarded(path));
+    }
+
+    /** Whether a plain name is a pattern that ships in the jar. */
+    static boolean isBuiltIn(String name) {
+        return !name.contains("/") && !name.contains("\\") && PatternLoader.class.getResource(resource(name)) != null;
+    }
+
+    static Loaded builtIn(String name) {
+        try (java.io.InputStream in = PatternLoader.class.getResourceAsStream(resource(name))) {
+            if (in == null) throw new PresetException(name, "(file)", "is not a built-in pattern");
+            return parse(name + ".json", new String(in.readAllBytes(), java.nio.charset.StandardCharsets.UTF_8));
+        } catch (IOException e) {
+            throw new PresetException(name, "(file)", "cannot be read from the jar: " + e.getMessage());
+        }
+    }
+
+    private static String resource(String name) { return "/presets/" + FOLDER + "/" + name + ".json"; }
+
+    /** Why a pattern cannot be meshed at that edge length (too many vertices, or a panel too small for it), or null. */
+    static String edgeProblem(Pattern pattern, double edge) {
+        double area = 0;
+        for (Panel p : pattern.panels()) area += p.outline.area();
+        // A triangular lattice of spacing h has one vertex per (√3/2) h² of area.
+        double vertices = area / (Math.sqrt(3) / 2 * edge * edge);
+        if (vertices > Limits.PATTERN_VERTICES.hi)
+            return String.format("an edge of %.3g m would mesh the panels' %.3g m² into about %.0f vertices; at most %.0f are allowed: give a longer edge", edge, area, vertices, Limits.PATTERN_VERTICES.hi);
+        for (Panel p : pattern.panels())
+            if (p.outline.length() < 3 * edge)
+                return "an edge of " + String.format("%.3g", edge) + " m is too long for panel \"" + p.name + "\" (its outline is " + String.format("%.3g", p.outline.length()) + " m round): give an edge at most a third of that";
+        return null;
     }
 
     /** Parses a pattern's text; {@code file} names it in errors. */
@@ -85,20 +113,13 @@ public final class PatternLoader {
             } catch (IllegalArgumentException e) {
                 throw fail(e.getMessage().startsWith("seam") ? "seams" : "panels", e.getMessage());
             }
-            double area = 0;
-            for (Panel p : panels) area += p.outline.area();
-            // A triangular lattice of spacing h has one vertex per (√3/2) h² of area.
-            double vertices = area / (Math.sqrt(3) / 2 * edge * edge);
-            if (vertices > Limits.PATTERN_VERTICES.hi)
-                throw fail("edge", String.format("would mesh the panels' %.3g m² into about %.0f vertices; at most %.0f are allowed: give a longer edge", area, vertices, Limits.PATTERN_VERTICES.hi));
-            for (Panel p : panels)
-                if (p.outline.length() < 3 * edge)
-                    throw fail("edge", "is too long for panel \"" + p.name + "\" (its outline is " + String.format("%.3g", p.outline.length()) + " m round): give an edge at most a third of that");
+            String problem = edgeProblem(pattern, edge);
+            if (problem != null) throw fail("edge", problem);
             return new Loaded(pattern, edge, description);
         }
 
         Panel panel(Node n) {
-            object(n, Set.of("name", "fabric", "grain", "outline", "position", "rotation", "wrap"));
+            object(n, Set.of("name", "fabric", "grain", "outline", "position", "rotation", "wrap", "around"));
             String name = string(required(n, "name"));
             Node f = required(n, "fabric");
             String fabric = string(f);
@@ -109,9 +130,21 @@ public final class PatternLoader {
             if (Math.hypot(grain[0], grain[1]) < 1e-9) throw fail(g.path, "panel \"" + name + "\": must be a direction, was [0, 0]");
             Node o = required(n, "outline");
             Outline outline = outline(o, name);
-            Node p = optional(n, "position"), r = optional(n, "rotation"), w = optional(n, "wrap");
-            Placement at = new Placement(p == null ? new double[3] : vector(p, Limits.POSITION),
-                    r == null ? new double[3] : vector(r, Limits.ROTATION), w == null ? 0 : number(w, Limits.WRAP_RADIUS));
+            Node p = optional(n, "position"), r = optional(n, "rotation"), w = optional(n, "wrap"), around = optional(n, "around");
+            Placement at;
+            if (around != null) {
+                for (Node other : new Node[] {p, r, w})
+                    if (other != null) throw fail(other.path, "panel \"" + name + "\": a panel is placed by position, rotation and wrap, or around a body part, not both");
+                object(around, Set.of("centre", "radii", "angle"));
+                Node radii = required(around, "radii"), angle = optional(around, "angle");
+                if (!radii.json.isArray() || radii.json.size() != 2) throw fail(radii.path, "must be [x, z], the half widths of the body part, was " + describe(radii.json));
+                at = Placement.around(vector(required(around, "centre"), Limits.POSITION),
+                        new double[] {number(new Node(radii.json.get(0), radii.path + "[0]"), Limits.SIZE), number(new Node(radii.json.get(1), radii.path + "[1]"), Limits.SIZE)},
+                        angle == null ? 0 : number(angle, Limits.ROTATION));
+            } else {
+                at = new Placement(p == null ? new double[3] : vector(p, Limits.POSITION),
+                        r == null ? new double[3] : vector(r, Limits.ROTATION), w == null ? 0 : number(w, Limits.WRAP_RADIUS));
+            }
             return new Panel(name, outline, grain, fabric, at);
         }
 

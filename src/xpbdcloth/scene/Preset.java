@@ -132,6 +132,22 @@ public final class Preset {
         }
     }
 
+    /**
+     * A garment: its pattern meshed (panels placed around the body, their flat rest shape, the stitches), the
+     * fabric it is cut from, and how it is sewn: the sewing time (s), the stitches' compliance while sewing
+     * (m/N), and the seams' bending stiffness over the fabric's once closed.
+     */
+    public static final class GarmentSpec {
+        public final xpbdcloth.pattern.PatternMesh pattern;
+        public final FabricSpec fabric;
+        public final double sewingTime, sewingCompliance, seamBending;
+
+        GarmentSpec(xpbdcloth.pattern.PatternMesh pattern, FabricSpec fabric, double sewingTime, double sewingCompliance, double seamBending) {
+            this.pattern = pattern; this.fabric = fabric;
+            this.sewingTime = sewingTime; this.sewingCompliance = sewingCompliance; this.seamBending = seamBending;
+        }
+    }
+
     /** A bend sharper than the yield curvature (1/m) moves its rest angle at the rate (1/s): a crease ({@link xpbdcloth.engine.HingePlasticity}). */
     public static final class PlasticitySpec {
         public final double yieldCurvature, rate;
@@ -158,6 +174,8 @@ public final class Preset {
         public final String meshFile;
         /** Mesh only: pinned vertex indices, ascending, each once. */
         public final int[] pinnedVertices;
+        /** A garment's panels and sewing (its mesh is {@link #mesh}), or null. */
+        public final GarmentSpec garment;
 
         Cloth(int columns, int rows, double width, double height, ClothBuilder.Plane plane, double[] origin,
               double arealDensity, double totalMass, List<int[]> pins) {
@@ -167,14 +185,20 @@ public final class Preset {
             this.mesh = null;
             this.meshFile = null;
             this.pinnedVertices = new int[0];
+            this.garment = null;
         }
 
         Cloth(ClothMesh mesh, String meshFile, double arealDensity, double totalMass, int[] pinnedVertices) {
+            this(mesh, meshFile, arealDensity, totalMass, pinnedVertices, null);
+        }
+
+        Cloth(ClothMesh mesh, String meshFile, double arealDensity, double totalMass, int[] pinnedVertices, GarmentSpec garment) {
             this.columns = 0; this.rows = 0; this.width = 0; this.height = 0; this.plane = null; this.origin = new double[3];
             this.arealDensity = arealDensity; this.totalMass = totalMass; this.pins = List.of();
             this.mesh = mesh;
             this.meshFile = meshFile;
             this.pinnedVertices = pinnedVertices.clone();
+            this.garment = garment;
         }
 
         public boolean isMesh() { return mesh != null; }

@@ -37,7 +37,7 @@ import xpbdcloth.mesh.UsdaReader;
  */
 public final class PresetLoader {
     /** The presets that ship with the project, in the order the sketch offers them. */
-    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth", "table", "arm", "drop-fold", "fabric", "flag-fabric", "drape", "denim-fold", "mannequin-poncho", "mannequin-turn", "torus-spin", "crease", "pillow", "balloon");
+    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth", "table", "arm", "drop-fold", "fabric", "flag-fabric", "drape", "denim-fold", "mannequin-poncho", "mannequin-turn", "torus-spin", "crease", "pillow", "balloon", "skirt");
 
     private PresetLoader() {}
 
@@ -86,11 +86,15 @@ public final class PresetLoader {
 
         /** A body to collide with: an OBJ, a .usda with an animated Mesh, or a folder of OBJ frames (played at fps). */
         BodyMesh body(String relativeName, double fps);
+
+        /** A garment pattern: a built-in one by name (data/patterns/NAME.json), or a file. */
+        PatternLoader.Loaded pattern(String relativeName);
     }
 
     private static final MeshFiles BUILT_IN_FILES = new MeshFiles() {
         @Override public ClothMesh load(String name, double weld) { return builtInMesh(name, weld); }
         @Override public BodyMesh body(String name, double fps) { return builtInBody(name); }
+        @Override public PatternLoader.Loaded pattern(String name) { return PatternLoader.builtIn(name); }
     };
 
     /**
@@ -116,11 +120,22 @@ public final class PresetLoader {
                 return BodyMesh.of(name, ObjReader.read(file, BODY_WELD));
             }
 
+            @Override public PatternLoader.Loaded pattern(String name) {
+                Path file = folder.resolve(name);
+                if (!Files.exists(file) && PatternLoader.isBuiltIn(name)) return PatternLoader.builtIn(name);
+                return PatternLoader.parse(file.getFileName().toString(), readGuarded(file));
+            }
+
             private boolean builtIn(String name) {
                 boolean plainName = !name.contains("/") && !name.contains("\\");
                 return plainName && PresetLoader.class.getResource("/presets/" + name) != null;
             }
         };
+    }
+
+    /** A preset's text as if it were a file in {@code folder} (the meshes and patterns it names are looked for there); {@code file} names it in errors. */
+    public static Preset parseBeside(String file, String text, Path folder) {
+        return parse(file, text, besides(folder.toAbsolutePath()));
     }
 
     /** The largest preset file read, bytes: the biggest sensible preset is a few kB. */
@@ -261,10 +276,13 @@ public final class PresetLoader {
             // fabric, a whole material, added on top if given) and the solver are read apart, so a problem in one
             // does not hide another's; the rest needs all of them.
             Node fn = optional(root, "fabric");
-            Preset.FabricSpec fabric = fn == null ? null : part(() -> fabric(fn));
-            Preset.Cloth cloth = fn != null && fabric == null ? null : part(() -> cloth(required(root, "cloth"), fabric));
-            Node fs = fn == null ? part(() -> required(root, "families")) : optional(root, "families");
-            Map<ConstraintFamily, Material> families = fs == null ? (fn == null ? null : new EnumMap<>(ConstraintFamily.class)) : part(() -> families(fs));
+            Preset.FabricSpec given = fn == null ? null : part(() -> fabric(fn));
+            Preset.Cloth cloth = fn != null && given == null ? null : part(() -> cloth(required(root, "cloth"), given));
+            // A garment is cut from its panels' fabric unless the preset names another.
+            Preset.FabricSpec fabric = given == null && cloth != null && cloth.garment != null ? cloth.garment.fabric : given;
+            boolean garment = root.json.path("cloth").has("pattern");
+            Node fs = fn == null && !garment ? part(() -> required(root, "families")) : optional(root, "families");
+            Map<ConstraintFamily, Material> families = fs == null ? (fn == null && !garment ? null : new EnumMap<>(ConstraintFamily.class)) : part(() -> families(fs));
             SolverSettings solver = part(() -> solver(required(root, "solver")));
             if (cloth == null || families == null || solver == null) return null;
             return part(() -> rest(root, name, description, fabric, cloth, families, solver));
@@ -321,6 +339,7 @@ public final class PresetLoader {
 
         Preset.Cloth cloth(Node n, Preset.FabricSpec fabric) {
             if (n.json.isObject() && n.json.has("mesh")) return meshCloth(n, fabric);
+            if (n.json.isObject() && n.json.has("pattern")) return garmentCloth(n, fabric);
             object(n, Set.of("columns", "rows", "width", "height", "plane", "origin", "arealDensity", "totalMass", "pins"));
             int columns = integer(required(n, "columns"), Limits.RESOLUTION);
             int rows = integer(required(n, "rows"), Limits.RESOLUTION);
@@ -367,6 +386,49 @@ public final class PresetLoader {
             Node ps = optional(n, "pins");
             if (ps != null) for (Node p : array(ps, Limits.MAX_PIN_ENTRIES)) for (int v : meshPins(p, mesh)) pinned.add(v);
             return new Preset.Cloth(mesh, name, mass[0], mass[1], pinned.stream().mapToInt(Integer::intValue).toArray());
+        }
+
+        /**
+         * A garment from a pattern (a built-in name or a file beside the preset), meshed at the pattern's edge
+         * length or the cloth's own, and how it is sewn. Its fabric is the panels' (all one) unless the preset
+         * gives one.
+         */
+        Preset.Cloth garmentCloth(Node n, Preset.FabricSpec fabric) {
+            object(n, Set.of("pattern", "edge", "sewing", "arealDensity", "totalMass"));
+            Node pn = required(n, "pattern");
+            String name = string(pn);
+            PatternLoader.Loaded loaded;
+            try {
+                loaded = meshes.pattern(name);
+            } catch (PresetException e) {
+                throw fail(pn.path, e.getMessage());
+            }
+            Node e = optional(n, "edge");
+            double edge = e == null ? loaded.edge : number(e, Limits.PATTERN_EDGE);
+            String tooFine = PatternLoader.edgeProblem(loaded.pattern, edge);
+            if (tooFine != null) throw fail(e == null ? pn.path : e.path, name + ": " + tooFine);
+            Preset.FabricSpec cut = fabric != null ? fabric : new Preset.FabricSpec(commonFabric(pn, loaded.pattern), null, false, null, false);
+            Node s = optional(n, "sewing");
+            double time = 1.5, compliance = 1e-6, seam = 1;
+            if (s != null) {
+                object(s, Set.of("time", "compliance", "seamBending"));
+                Node t = optional(s, "time"), c = optional(s, "compliance"), b = optional(s, "seamBending");
+                if (t != null) time = number(t, Limits.SEWING_TIME);
+                if (c != null) compliance = number(c, Limits.COMPLIANCE);
+                if (b != null) seam = number(b, Limits.SEAM_BENDING);
+            }
+            double[] mass = mass(n, cut);
+            xpbdcloth.pattern.PatternMesh mesh = loaded.mesh(edge);
+            return new Preset.Cloth(mesh.toClothMesh(), name, mass[0], mass[1], new int[0], new Preset.GarmentSpec(mesh, cut, time, compliance, seam));
+        }
+
+        /** The one fabric all of a pattern's panels are cut from. */
+        xpbdcloth.fabric.Fabric commonFabric(Node field, xpbdcloth.pattern.Pattern pattern) {
+            java.util.Set<String> names = new java.util.TreeSet<>();
+            for (xpbdcloth.pattern.Panel p : pattern.panels()) names.add(p.fabric);
+            if (names.size() > 1)
+                throw fail(field.path, "the panels are cut from " + String.join(", ", names) + "; a garment of several fabrics is not simulated yet: give the preset one \"fabric\"");
+            return FabricCatalogue.named(names.iterator().next());
         }
 
         /**

@@ -1,5 +1,7 @@
 package xpbdcloth.scene;
 
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
 import xpbdcloth.engine.Aerodynamics;
 import xpbdcloth.engine.ConstraintBlock;
@@ -22,7 +24,9 @@ import xpbdcloth.engine.Box;
 import xpbdcloth.engine.Capsule;
 import xpbdcloth.engine.RigidCollider;
 import xpbdcloth.engine.SelfCollision;
+import xpbdcloth.engine.Sewing;
 import xpbdcloth.engine.Wind;
+import xpbdcloth.mesh.TriangleIntersections;
 
 /**
  * A running scene: the cloth, simulation, spheres, scripted pins and wind that a {@link Preset}
@@ -47,17 +51,25 @@ public final class Scene {
     private double presetAmount = Double.NaN;
     /** Whether the fabric bends by dihedral hinges (a bent rest, or yielding) rather than plate patches. */
     private boolean bendsByHinges;
+    /** A garment's sewing, or null; and its particles' representatives once sewn ({@link xpbdcloth.pattern.PatternMesh#welded}). */
+    private Sewing sewing;
+    private int[] welded;
 
     private Scene(Preset preset) {
         this.preset = preset;
         cloth = preset.cloth.isMesh() ? meshCloth(preset) : gridCloth(preset);
 
         simulation = cloth.simulation(preset.solver);
+        Preset.GarmentSpec garment = preset.cloth.garment;
         if (preset.fabric != null) {
             Preset.FabricSpec f = preset.fabric;
+            // A garment's rest shape is its flat pattern, not the panels rolled round the body: its fabric is
+            // built with each particle where it lies on its panel, then the panels go back where they start.
+            double[] placed = garment == null ? null : flatten(cloth.particles(), garment.pattern.flatPositions());
             double[] warp = f.warp != null ? f.warp : FabricConstraints.warpFromTextureCoordinates(cloth.particles(), cloth.triangles(), preset.cloth.mesh.triangleUVs());
             for (ConstraintBlock b : FabricConstraints.build(cloth.particles(), cloth.triangles(), warp, f.fabric.membrane, f.fabric.bendingStiffness, f.tethers, f.plasticity != null))
                 simulation.add(b);
+            if (placed != null) for (int i = 0; i < cloth.particles().count(); i++) cloth.particles().setPosition(i, placed[3 * i], placed[3 * i + 1], placed[3 * i + 2]);
             if (f.plasticity != null) {
                 plasticity = new HingePlasticity(simulation.blocks(), cloth.particles(), f.plasticity.yieldCurvature, f.plasticity.rate);
                 simulation.add(plasticity);
@@ -68,6 +80,15 @@ public final class Scene {
             }
             for (ConstraintBlock b : simulation.blocks()) bendsByHinges |= b instanceof DihedralBlock;
             fabric = f.fabric;
+        }
+        if (garment != null) {
+            List<Double> hingeRest = new ArrayList<>();
+            int[] hinges = garment.pattern.seamHinges(hingeRest);
+            sewing = new Sewing(cloth.particles(), allStitches(garment.pattern), hinges, hingeRest.stream().mapToDouble(Double::doubleValue).toArray(),
+                    garment.sewingTime, garment.sewingCompliance, fabric.bendingStiffness, garment.seamBending);
+            for (ConstraintBlock b : sewing.blocks()) simulation.add(b);
+            simulation.add(sewing.weightless(simulation));
+            welded = garment.pattern.welded();
         }
         if (preset.pressure != null) {
             gas = preset.pressure.fill(cloth.particles(), cloth.triangles());
@@ -84,7 +105,7 @@ public final class Scene {
             plane.depenetrationSpeed(pl.depenetrationSpeed);
             simulation.add(plane);
         }
-        if (preset.selfCollision != null) simulation.selfCollision(selfCollision(cloth, preset.selfCollision));
+        if (preset.selfCollision != null) simulation.selfCollision(selfCollision(cloth, preset.selfCollision, garment));
         for (Preset.SolidSpec sp : preset.solids) {
             RigidCollider solid = sp.type.equals("box")
                     ? new Box(path(sp.path), sp.halfExtents, sp.rotation, sp.margin, sp.staticFriction, sp.kineticFriction)
@@ -151,11 +172,43 @@ public final class Scene {
         }
     }
 
-    /** The cloth's self-collision from its rest mesh. */
-    public static SelfCollision selfCollision(Cloth cloth, Preset.SelfCollisionSpec s) {
+    /**
+     * The cloth's self-collision from its rest mesh; a garment's as it will be once sewn (each stitched particle
+     * where its partner is, so the two sides of a seam are neighbours, not a contact that holds the seam open).
+     */
+    public static SelfCollision selfCollision(Cloth cloth, Preset.SelfCollisionSpec s, Preset.GarmentSpec garment) {
         int[] triangles = s.continuous && cloth.triangles().length > 0 ? cloth.triangles() : null;
-        return new SelfCollision(cloth.mesh().positions(), triangles, s.thickness, s.staticFriction, s.kineticFriction);
+        double[] rest = cloth.mesh().positions();
+        int[] welded = garment == null ? null : garment.pattern.welded();
+        if (welded != null) for (int i = 0; i < welded.length; i++) System.arraycopy(rest, 3 * welded[i], rest, 3 * i, 3);
+        return new SelfCollision(rest, triangles, welded, s.thickness, s.staticFriction, s.kineticFriction);
     }
+
+    /** Every seam's stitches, one list of pairs. */
+    private static int[] allStitches(xpbdcloth.pattern.PatternMesh pattern) {
+        List<Integer> out = new ArrayList<>();
+        for (xpbdcloth.pattern.Seam seam : pattern.pattern.seams()) for (int v : pattern.stitches(seam.name)) out.add(v);
+        return out.stream().mapToInt(Integer::intValue).toArray();
+    }
+
+    /** Puts each particle at its flat pattern position (x, y, 0); returns where they were. */
+    private static double[] flatten(xpbdcloth.engine.Particles p, double[] flat) {
+        double[] placed = p.positions().clone();
+        for (int i = 0; i < p.count(); i++) p.setPosition(i, flat[2 * i], flat[2 * i + 1], 0);
+        return placed;
+    }
+
+    /**
+     * How many pairs of the cloth's triangles pass through each other now ({@link TriangleIntersections}, the
+     * measure self-collision must hold at 0); a garment's stitched particles count as one, so triangles that
+     * meet across a seam are neighbours, not a crossing.
+     */
+    public int crossingPairs() {
+        return TriangleIntersections.count(simulation.particles().positions(), cloth.triangles(), sewing == null ? null : welded);
+    }
+
+    /** A garment's sewing (its stitches and seams), or null for any other cloth. */
+    public Sewing sewing() { return sewing; }
 
     /** A built-in scene by name. */
     public static Scene builtIn(String name) { return of(PresetLoader.builtIn(name)); }
@@ -186,6 +239,7 @@ public final class Scene {
         if (fabric == null) throw new IllegalArgumentException("fabric: this cloth is springs, not a fabric (its preset has no \"fabric\" block)");
         FabricSwap.apply(simulation.blocks(), cloth.particles(), next);
         if (stiffening != null) stiffening.use(next.stretchingCurve);
+        if (sewing != null) sewing.useBendingStiffness(next.bendingStiffness);
         fabric = next;
     }
 

@@ -308,9 +308,8 @@ final class Hud {
      * ({@link TriangleIntersections}, the measure self-collision must hold at 0); nothing for a rope.
      */
     static String crossings(xpbdcloth.scene.Scene scene) {
-        int[] t = scene.cloth().triangles();
-        if (t.length == 0) return "";
-        return fmt(", %d crossing triangle pairs", TriangleIntersections.count(scene.simulation().particles().positions(), t));
+        if (scene.cloth().triangles().length == 0) return "";
+        return fmt(", %d crossing triangle pairs", scene.crossingPairs());
     }
 
     /** The gas inside a closed cloth: its pressure over the air and its volume (j/J pump it), or nothing. */

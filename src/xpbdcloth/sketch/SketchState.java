@@ -118,7 +118,7 @@ public final class SketchState {
             s.setWind(windOn);
             SelfCollision self = s.simulation().selfCollision();
             if (selfCollisionOn != (self != null) || (self != null && continuousOn != (self.guard() != null)))
-                s.simulation().selfCollision(selfCollisionOn ? Scene.selfCollision(s.cloth(), selfCollisionSpec()) : null);
+                s.simulation().selfCollision(selfCollisionOn ? Scene.selfCollision(s.cloth(), selfCollisionSpec(), s.preset().cloth.garment) : null);
             s.wind().setVelocity(windSpeed * Math.cos(windAngle), 0, windSpeed * Math.sin(windAngle));
         }
     }

@@ -55,7 +55,7 @@ class SeamStitchesTest {
         // An L-shaped walk: from halfway along edge 0 over corner 1 to halfway up edge 1, sewn to a straight edge.
         Panel a = Patterns.panel("a", Patterns.rectangle(0.3, 0.2));
         Panel b = Patterns.panel("b", Patterns.rectangle(0.25, 0.1));
-        Seam seam = new Seam("l", new Stretch("a", 0.5, 1.5, false), new Stretch("b", 0, 1, false));
+        Seam seam = new Seam("l", new Stretch("a", 0.5, 1.5, false), new Stretch("b", 1, 0, true));
         PatternMesh m = PatternMesh.of(new Pattern("corner", List.of(a, b), List.of(seam)), EDGE);
         int[] s = m.stitches("l");
         double[] xy = m.flatPositions();
@@ -118,6 +118,8 @@ class SeamStitchesTest {
                 refused(a, b, new Seam("side", new Stretch("sleeve", 1, 2, false), new Stretch("back", 3, 2, true))));
         assertEquals("seam \"side\": stretch \"back\" 2 to 2 is empty",
                 refused(a, b, new Seam("side", new Stretch("front", 1, 2, false), new Stretch("back", 2, 2, false))));
+        assertEquals("seam \"side\" sews the face of one panel to the back of the other (both stretches run the same way round their panels' outlines): walk one of them the other way (\"backward\")",
+                refused(a, b, new Seam("side", new Stretch("front", 1, 2, false), new Stretch("back", 0, 1, false))));
         // Two seams meeting at a corner share an end, which is allowed.
         assertDoesNotThrow(() -> new Pattern("ok", List.of(a, b), List.of(new Seam("side", new Stretch("front", 1, 2, false), new Stretch("back", 3, 2, true)),
                 new Seam("top", new Stretch("front", 2, 3, false), new Stretch("back", 2, 1, true)))));

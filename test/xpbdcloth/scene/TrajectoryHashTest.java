@@ -132,7 +132,11 @@ class TrajectoryHashTest {
             Map.entry("balloon/xpbd", "391cdc6e7c32da04"),
             Map.entry("balloon/pbd", "391cdc6e7c32da04"),
             Map.entry("balloon/coloured", "26875ab6147a3284"),
-            Map.entry("balloon/coloured-2-threads", "26875ab6147a3284"));
+            Map.entry("balloon/coloured-2-threads", "26875ab6147a3284"),
+            Map.entry("skirt/xpbd", "1ae7dd6cde79d44f"),
+            Map.entry("skirt/pbd", "1b357bc20cb108aa"),
+            Map.entry("skirt/coloured", "b8fe59c5dba062cc"),
+            Map.entry("skirt/coloured-2-threads", "b8fe59c5dba062cc"));
 
     static String variantHash(String scene, String variant) {
         Simulation sim = Scene.builtIn(scene).simulation();

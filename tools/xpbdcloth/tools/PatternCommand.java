@@ -33,7 +33,7 @@ final class PatternCommand implements Callable<Integer> {
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
-    @Override public Integer call() throws Exception {
+    @Override public Integer call() throws java.io.IOException {
         PatternLoader.Loaded loaded = PatternLoader.byNameOrPath(pattern);
         double h = edge == null ? loaded.edge : edge;
         if (!(h >= 1e-3 && h <= 1)) throw new CommandLine.ParameterException(spec.commandLine(), "--edge must be in [0.001, 1] m, was " + edge);

@@ -1,0 +1,67 @@
+package xpbdcloth.scene;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+import java.util.HashSet;
+import java.util.Set;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import xpbdcloth.engine.MeshCollider;
+import xpbdcloth.engine.RigidCollider;
+import xpbdcloth.engine.Simulation;
+import xpbdcloth.pattern.PatternMesh;
+import xpbdcloth.pattern.Seam;
+
+/**
+ * The skirt, sewn onto the dress form from its pattern: every seam closed to under a millimetre by the end of
+ * the sewing time; the sewn garment's triangles are the panels' (none lost, none twice); no two of its
+ * triangles cross at any step; no particle inside the body.
+ */
+@Tag("slow")
+class GarmentTest {
+    @Test
+    void theSkirtIsSewnShutWithoutCrossingItselfOrTheBody() {
+        Scene scene = Scene.builtIn("skirt");
+        Simulation sim = scene.simulation();
+        PatternMesh pattern = scene.preset().cloth.garment.pattern;
+        assertArrayEquals(pattern.triangles(), scene.cloth().triangles(), "the cloth is the panels' triangles");
+        Set<String> distinct = new HashSet<>();
+        int[] t = pattern.triangles();
+        for (int k = 0; k < t.length; k += 3) {
+            int[] c = {t[k], t[k + 1], t[k + 2]};
+            java.util.Arrays.sort(c);
+            assertTrue(distinct.add(java.util.Arrays.toString(c)), "triangle " + k / 3 + " once");
+        }
+        int panels = 0;
+        for (int i = 0; i < pattern.pattern.panels().size(); i++) panels += pattern.panelTriangleRange(i)[1] - pattern.panelTriangleRange(i)[0];
+        assertEquals(panels, scene.cloth().triangles().length / 3);
+        MeshCollider body = null;
+        for (RigidCollider c : sim.solids()) if (c instanceof MeshCollider) body = (MeshCollider) c;
+        assertNotNull(body);
+
+        double time = scene.preset().cloth.garment.sewingTime, dt = sim.settings().timestep();
+        int sewingSteps = (int) Math.ceil(time / dt - 1e-9);
+        for (int step = 1; step <= sewingSteps + 50; step++) {
+            sim.step();
+            assertEquals(0, scene.crossingPairs(), "crossing triangle pairs after step " + step);
+            if (step == sewingSteps) {
+                assertTrue(scene.sewing().closed(), "closed by the sewing time");
+                double[] x = sim.particles().positions();
+                for (Seam s : pattern.pattern.seams()) {
+                    int[] st = pattern.stitches(s.name);
+                    for (int k = 0; k < st.length; k += 2) {
+                        double gap = Math.sqrt(sq(x[3 * st[k]] - x[3 * st[k + 1]]) + sq(x[3 * st[k] + 1] - x[3 * st[k + 1] + 1]) + sq(x[3 * st[k] + 2] - x[3 * st[k + 1] + 2]));
+                        assertTrue(gap < 1e-3, "seam \"" + s.name + "\" stitch " + k / 2 + " is " + gap + " m apart");
+                    }
+                }
+            }
+            if (step % 5 == 0) {
+                double[] x = sim.particles().positions();
+                for (int i = 0; i < x.length / 3; i++)
+                    assertTrue(body.signedDistance(x[3 * i], x[3 * i + 1], x[3 * i + 2]) >= 0, "particle " + i + " inside the body after step " + step);
+            }
+        }
+    }
+
+    static double sq(double v) { return v * v; }
+}
