@@ -13,7 +13,7 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
 /**
- * The layering is one-way: tools, library → sketch → fit/experiments → usd → scene → fabric → engine → mesh, linalg. The engine (and its tests)
+ * The layering is one-way: tools, library → sketch → fit/experiments → usd → scene → fabric → engine, pattern → mesh, linalg. The engine (and its tests)
  * imports nothing of the layers above it nor of Processing; the fabric package nothing above it; the scene package nothing of the sketch,
  * the tools or the experiments. Read from the source text, so a wrong import fails here by name. The tools and experiments are a
  * source set of their own (tools/), which the simulator's (src/) cannot see at all: the compiler holds that line.

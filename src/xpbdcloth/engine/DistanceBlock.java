@@ -29,10 +29,7 @@ public final class DistanceBlock extends ConstraintBlock implements LinearLength
 
     /** Adds a constraint keeping a and b at distance restLength (m); returns its index. */
     public int add(int a, int b, double restLength) {
-        if (a == b) throw new IllegalArgumentException("b must differ from a, was " + b);
-        Check.atLeast("a", a, 0);
-        Check.atLeast("b", b, 0);
-        Check.nonNegative("restLength", restLength);
+        checkEnds(a, b, restLength);
         int i = newSlot();
         particles[2 * i] = a;
         particles[2 * i + 1] = b;
@@ -45,6 +42,14 @@ public final class DistanceBlock extends ConstraintBlock implements LinearLength
         Check.index("a", a, p.count());
         Check.index("b", b, p.count());
         return add(a, b, distance(p, a, b));
+    }
+
+    /** Two distinct particle indices and a rest length ≥ 0, or the error naming what is wrong. */
+    static void checkEnds(int a, int b, double restLength) {
+        if (a == b) throw new IllegalArgumentException("b must differ from a, was " + b);
+        Check.atLeast("a", a, 0);
+        Check.atLeast("b", b, 0);
+        Check.nonNegative("restLength", restLength);
     }
 
     static double distance(Particles p, int a, int b) {
@@ -65,8 +70,10 @@ public final class DistanceBlock extends ConstraintBlock implements LinearLength
 
     @Override public double evaluate(int i, Particles p) { return distance(p, a(i), b(i)) - rest[i]; }
 
-    @Override public void gradient(int i, Particles p, double[] out) {
-        int a = a(i), b = b(i);
+    @Override public void gradient(int i, Particles p, double[] out) { unitGradient(p, a(i), b(i), out); }
+
+    /** ∇C of |x_a − x_b| − L: n for a, −n for b (zero where the two coincide). */
+    static void unitGradient(Particles p, int a, int b, double[] out) {
         double dx = p.x[3 * a] - p.x[3 * b], dy = p.x[3 * a + 1] - p.x[3 * b + 1], dz = p.x[3 * a + 2] - p.x[3 * b + 2];
         double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
         double s = len < MIN_LENGTH ? 0 : 1 / len;

@@ -30,9 +30,10 @@ public final class Sewing implements AfterStep {
     static final double HINGES_FROM = 0.4;
     private final DihedralBlock hinges;
     private final double[] startGap;
-    private final double time, compliance, seamFactor;
+    private final double time, seamFactor;
     private double bendingStiffness, elapsed;
-    private boolean closed;
+    /** Whether the stitches hold hard (their pulling done), and whether the seams have closed. */
+    private boolean holding, closed;
 
     /**
      * @param stitchPairs            particle pairs (a, b, a, b, …) to sew together
@@ -49,7 +50,7 @@ public final class Sewing implements AfterStep {
         if (hinges.length != 4 * restAreaOverEdgeSquared.length)
             throw new IllegalArgumentException("hinges must be 4 particles per rest value (" + 4 * restAreaOverEdgeSquared.length + "), was " + hinges.length);
         this.time = Check.inRange("time", time, 0, 1e6);
-        this.compliance = Check.inRange("compliance", compliance, 0, EngineRange.MAX_COMPLIANCE);
+        Check.inRange("compliance", compliance, 0, EngineRange.MAX_COMPLIANCE);
         this.bendingStiffness = Check.inRange("bendingStiffness", bendingStiffness, Double.MIN_NORMAL, 1e6);
         this.seamFactor = Check.inRange("seamFactor", seamFactor, 1e-3, 1e3);
         stitches = new StitchBlock(Math.max(1, stitchPairs.length / 2));
@@ -94,7 +95,7 @@ public final class Sewing implements AfterStep {
         // moves particles after the crossing guard has passed them).
         double pulled = Math.min(1, elapsed / (PULLING * time));
         if (pulled < 1) for (int k = 0; k < startGap.length; k++) stitches.setRestLength(k, startGap[k] * (1 - pulled));
-        else if (stitches.restLength(0) > 0 || stitches.compliance(0) > 0) holdHard();
+        else if (!holding) holdHard();
         double left = 1 - elapsed / time;
         if (left < HINGES_FROM) {
             double ramp = (HINGES_FROM - left) / HINGES_FROM;
@@ -194,6 +195,7 @@ public final class Sewing implements AfterStep {
     }
 
     private void holdHard() {
+        holding = true;
         for (int k = 0; k < startGap.length; k++) {
             stitches.setRestLength(k, 0);
             stitches.setCompliance(k, 0);

@@ -27,10 +27,7 @@ public final class StitchBlock extends ConstraintBlock {
 
     /** Adds a stitch between a and b at rest distance r (m); returns its index. */
     public int add(int a, int b, double r) {
-        if (a == b) throw new IllegalArgumentException("b must differ from a, was " + b);
-        Check.atLeast("a", a, 0);
-        Check.atLeast("b", b, 0);
-        Check.nonNegative("r", r);
+        DistanceBlock.checkEnds(a, b, r);
         int i = newSlot();
         particles[2 * i] = a;
         particles[2 * i + 1] = b;
@@ -49,14 +46,7 @@ public final class StitchBlock extends ConstraintBlock {
 
     @Override public double evaluate(int i, Particles p) { return gap(i, p) - rest[i]; }
 
-    @Override public void gradient(int i, Particles p, double[] out) {
-        int a = a(i), b = b(i);
-        double dx = p.x[3 * a] - p.x[3 * b], dy = p.x[3 * a + 1] - p.x[3 * b + 1], dz = p.x[3 * a + 2] - p.x[3 * b + 2];
-        double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-        double s = len < DistanceBlock.MIN_LENGTH ? 0 : 1 / len;
-        out[0] = dx * s; out[1] = dy * s; out[2] = dz * s;
-        out[3] = -dx * s; out[4] = -dy * s; out[5] = -dz * s;
-    }
+    @Override public void gradient(int i, Particles p, double[] out) { DistanceBlock.unitGradient(p, a(i), b(i), out); }
 
     @Override void project(int i, Particles p, SolverContext ctx) {
         final double[] x = p.x;

@@ -280,13 +280,31 @@ public final class PatternMesh {
         return v;
     }
 
+    /** The hinges across the seams: four particles each, and each one's (A₀ + A₁)/|e|² in the flat pattern. */
+    public static final class SeamHinges {
+        /** (o0, o1, e0, e1) per hinge. */
+        public final int[] particles;
+        public final double[] restAreaOverEdgeSquared;
+
+        SeamHinges(int[] particles, double[] restAreaOverEdgeSquared) {
+            this.particles = particles;
+            this.restAreaOverEdgeSquared = restAreaOverEdgeSquared;
+        }
+    }
+
+    /** Every seam's stitches, in the pattern's order, as one list of pairs (a, b, a, b, …). */
+    public int[] allStitches() {
+        return stitches.values().stream().flatMapToInt(java.util.Arrays::stream).toArray();
+    }
+
     /**
      * The hinges across the seams once closed: per pair of consecutive stitches, the two outline triangles on
      * either side, as (o0, o1, e0, e1) with the edge e0–e1 on side a (o0's triangle wound e0, e1, o0 and o1's
-     * e1, e0, o1 counter-clockwise: a flat seam is a dihedral angle of 0); {@code restAreaOverEdgeSquared}
-     * gets (A₀ + A₁)/|e|² of each in the flat pattern (|e|² the mean of the two sides', eased or not).
+     * e1, e0, o1 counter-clockwise: a flat seam is a dihedral angle of 0), with (A₀ + A₁)/|e|² in the flat
+     * pattern (|e|² the mean of the two sides', eased or not).
      */
-    public int[] seamHinges(List<Double> restAreaOverEdgeSquared) {
+    public SeamHinges seamHinges() {
+        List<Double> restAreaOverEdgeSquared = new ArrayList<>();
         Map<Long, Integer> opposite = new java.util.HashMap<>();  // directed boundary edge a→b (CCW) → opposite vertex
         Map<Long, Integer> uses = new java.util.HashMap<>();
         for (int t = 0; t < triangles.length; t += 3)
@@ -308,7 +326,7 @@ public final class PatternMesh {
                 restAreaOverEdgeSquared.add((flatArea(o0, e0, e1) + flatArea(o1, f0, f1)) / e2);
                 out.add(o0); out.add(o1); out.add(e0); out.add(e1);
             }
-        return out.stream().mapToInt(Integer::intValue).toArray();
+        return new SeamHinges(out.stream().mapToInt(Integer::intValue).toArray(), restAreaOverEdgeSquared.stream().mapToDouble(Double::doubleValue).toArray());
     }
 
     private static long undirected(int a, int b) { return (long) Math.min(a, b) << 32 | Math.max(a, b); }

@@ -9,7 +9,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.EnumMap;
-import java.util.Iterator;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -905,112 +904,12 @@ public final class PresetLoader {
             return new Preset.WindSpec(vector(required(n, "velocity"), Limits.WIND_SPEED), number(required(n, "drag"), Limits.DRAG), g == null ? 0 : number(g, Limits.GUST));
         }
 
-        // ---- typed access with messages ----
-
-        void object(Node n, Set<String> allowed) {
-            if (!n.json.isObject()) throw fail(n.path, "must be an object, was " + describe(n.json));
-            only(n, allowed);
-        }
-
-        void only(Node n, Set<String> allowed) {
-            for (Iterator<String> it = n.json.fieldNames(); it.hasNext(); ) {
-                String f = it.next();
-                if (!allowed.contains(f))
-                    throw fail(n.child(f), "unknown field; allowed here: " + String.join(", ", new TreeSet<>(allowed)));
-            }
-        }
-
-        Node required(Node n, String name) {
-            JsonNode j = n.json.get(name);
-            if (j == null || j.isNull()) throw fail(n.child(name), "is missing");
-            return new Node(j, n.child(name));
-        }
-
-        Node optional(Node n, String name) {
-            JsonNode j = n.json.get(name);
-            return j == null || j.isNull() ? null : new Node(j, n.child(name));
-        }
-
-        /** An array of at most {@code max} entries. */
-        List<Node> array(Node n, int max) {
-            List<Node> out = array(n);
-            if (out.size() > max) throw fail(n.path, "has " + out.size() + " entries; at most " + max + " are allowed");
-            return out;
-        }
-
-        List<Node> array(Node n) {
-            if (!n.json.isArray()) throw fail(n.path, "must be an array, was " + describe(n.json));
-            List<Node> out = new ArrayList<>();
-            for (int i = 0; i < n.json.size(); i++) out.add(new Node(n.json.get(i), n.path + "[" + i + "]"));
-            return out;
-        }
-
-        String string(Node n) {
-            if (!n.json.isTextual()) throw fail(n.path, "must be a string, was " + describe(n.json));
-            return n.json.asText();
-        }
-
-        boolean bool(Node n) {
-            if (!n.json.isBoolean()) throw fail(n.path, "must be true or false, was " + describe(n.json));
-            return n.json.asBoolean();
-        }
-
-        double number(Node n, Limits.Range range) {
-            if (!n.json.isNumber()) throw fail(n.path, "must be a number, was " + describe(n.json));
-            double v = n.json.asDouble();
-            if (!Double.isFinite(v)) throw fail(n.path, "must be in " + range.text() + (range.unit.isEmpty() ? "" : " " + range.unit) + ", was " + n.json.asText());
-            if (!range.contains(v)) {
-                found.add(fail(n.path, "must be in " + range.text() + (range.unit.isEmpty() ? "" : " " + range.unit) + ", was " + n.json.asText()));
-                return range.clamp(v);
-            }
-            return v;
-        }
-
         /** Width or height: 0 along a single particle, else in {@link Limits#SIZE}. */
         double size(Node n, boolean spans) {
             if (spans) return number(n, Limits.SIZE);
             if (!n.json.isNumber() || n.json.asDouble() != 0 && !Limits.SIZE.contains(n.json.asDouble()))
                 throw fail(n.path, "must be 0 or in " + Limits.SIZE.text() + " m, was " + n.json.asText());
             return n.json.asDouble();
-        }
-
-        int integer(Node n, Limits.Range range) {
-            int v = integer(n);
-            if (!range.contains(v)) {
-                found.add(fail(n.path, "must be in " + range.text() + ", was " + v));
-                return (int) range.clamp(v);
-            }
-            return v;
-        }
-
-        int integer(Node n) {
-            if (n.json.isIntegralNumber() && !n.json.canConvertToInt())
-                throw fail(n.path, "is too large: must be a whole number within ±" + Integer.MAX_VALUE + ", was " + n.json.asText());
-            if (!n.json.isIntegralNumber()) throw fail(n.path, "must be a whole number, was " + describe(n.json));
-            return n.json.asInt();
-        }
-
-        double[] vector(Node n, Limits.Range range) {
-            if (!n.json.isArray() || n.json.size() != 3) throw fail(n.path, "must be [x, y, z], was " + describe(n.json));
-            double[] v = new double[3];
-            for (int i = 0; i < 3; i++) v[i] = number(new Node(n.json.get(i), n.path + "[" + i + "]"), range);
-            return v;
-        }
-
-        <E extends Enum<E>> E choice(Node n, Class<E> type) {
-            String s = string(n);
-            for (E e : type.getEnumConstants()) if (e.name().equalsIgnoreCase(s)) return e;
-            String[] names = Arrays.stream(type.getEnumConstants()).map(e -> e.name().toLowerCase(Locale.ROOT)).toArray(String[]::new);
-            throw fail(n.path, "must be one of " + String.join(", ", names) + ", was \"" + s + "\"");
-        }
-
-        static String describe(JsonNode j) {
-            if (j.isTextual()) return "string \"" + j.asText() + "\"";
-            if (j.isNumber()) return "number " + j.asText();
-            if (j.isBoolean()) return "boolean " + j.asText();
-            if (j.isArray()) return "an array of " + j.size();
-            if (j.isObject()) return "an object";
-            return j.getNodeType().toString().toLowerCase(Locale.ROOT);
         }
     }
 }

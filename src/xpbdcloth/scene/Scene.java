@@ -1,7 +1,5 @@
 package xpbdcloth.scene;
 
-import java.util.ArrayList;
-import java.util.List;
 import java.util.Locale;
 import xpbdcloth.engine.Aerodynamics;
 import xpbdcloth.engine.ConstraintBlock;
@@ -82,9 +80,8 @@ public final class Scene {
             fabric = f.fabric;
         }
         if (garment != null) {
-            List<Double> hingeRest = new ArrayList<>();
-            int[] hinges = garment.pattern.seamHinges(hingeRest);
-            sewing = new Sewing(cloth.particles(), allStitches(garment.pattern), hinges, hingeRest.stream().mapToDouble(Double::doubleValue).toArray(),
+            xpbdcloth.pattern.PatternMesh.SeamHinges hinges = garment.pattern.seamHinges();
+            sewing = new Sewing(cloth.particles(), garment.pattern.allStitches(), hinges.particles, hinges.restAreaOverEdgeSquared,
                     garment.sewingTime, garment.sewingCompliance, fabric.bendingStiffness, garment.seamBending);
             for (ConstraintBlock b : sewing.blocks()) simulation.add(b);
             simulation.add(sewing.weightless(simulation));
@@ -182,13 +179,6 @@ public final class Scene {
         int[] welded = garment == null ? null : garment.pattern.welded();
         if (welded != null) for (int i = 0; i < welded.length; i++) System.arraycopy(rest, 3 * welded[i], rest, 3 * i, 3);
         return new SelfCollision(rest, triangles, welded, s.thickness, s.staticFriction, s.kineticFriction);
-    }
-
-    /** Every seam's stitches, one list of pairs. */
-    private static int[] allStitches(xpbdcloth.pattern.PatternMesh pattern) {
-        List<Integer> out = new ArrayList<>();
-        for (xpbdcloth.pattern.Seam seam : pattern.pattern.seams()) for (int v : pattern.stitches(seam.name)) out.add(v);
-        return out.stream().mapToInt(Integer::intValue).toArray();
     }
 
     /** Puts each particle at its flat pattern position (x, y, 0); returns where they were. */
