@@ -19,7 +19,8 @@ import xpbdcloth.scene.Scene;
  *
  * <p>Every field the loader accepts is drawn (a test holds the fuzzer to the loader's own list of fields):
  * grids and the shipped meshes (placed, welded, pinned by index, group or box; the closed pillow and balloon
- * filled by a pressure block: a gas by its gauge or its amount, in air or a vacuum, or a held volume), spring
+ * filled by a pressure block: a gas by its gauge or its amount, in air or a vacuum, or a held volume; the skirt
+ * pattern sewn as a garment at a coarse edge, its sewing drawn), spring
  * families or a fabric (its moduli or a catalogue name, warp, tethers, plasticity, a catalogue fabric's
  * stiffening), every solver, spheres and colliders of every kind, pin motions (moves and turns), wind,
  * aerodynamics and self-collision.
@@ -178,7 +179,12 @@ final class PresetFuzz {
             int closed = mesh && closedDraw.nextInt(3) == 0 ? (fabric ? 0 : closedDraw.nextInt(CLOSED.length)) : -1;
             int facts = closed >= 0 ? MESHES.length + closed : meshIndex;
             Object meshFile = closed >= 0 ? CLOSED[closed][0] : MESHES[meshIndex][0], meshGroup = closed >= 0 ? CLOSED[closed][1] : MESHES[meshIndex][1];
-            long particles = mesh ? (long) meshFacts()[2 * facts] : (long) columns * rows;
+            // A garment (the skirt pattern, coarse: 5 to 20 cm edges) in one open-mesh case of four, from a stream of its own.
+            Random garmentDraw = new Random(Double.doubleToLongBits(width) ^ rows ^ 0x5eed);
+            boolean garment = mesh && closed < 0 && garmentDraw.nextInt(4) == 0;
+            double edge = 0.05 + 0.15 * garmentDraw.nextDouble();
+            long particles = garment ? xpbdcloth.scene.PatternLoader.byNameOrPath("skirt").mesh(edge).vertexCount()
+                    : mesh ? (long) meshFacts()[2 * facts] : (long) columns * rows;
             double budget = global ? WORK_BUDGET / 100 : WORK_BUDGET;
             while (particles * (double) iterations * substeps > budget && iterations * substeps > 1) {
                 if (iterations >= substeps) iterations = Math.max(1, iterations / 2); else substeps = Math.max(1, substeps / 2);
@@ -188,7 +194,11 @@ final class PresetFuzz {
             json.append("{ \"name\": \"fuzz\", \"description\": \"seeded random preset\", \"cloth\": { ");
             String massField = catalogue ? "" : byDensity ? ", \"arealDensity\": " + num(density) : ", \"totalMass\": " + num(mass);
             List<String> corners = new ArrayList<>();
-            if (mesh) {
+            if (garment) {
+                json.append("\"pattern\": \"skirt\", \"edge\": ").append(num(edge)).append(", \"sewing\": { \"time\": ").append(num(draw(Limits.SEWING_TIME, false)))
+                    .append(", \"compliance\": ").append(num(draw(Limits.COMPLIANCE, true))).append(", \"seamBending\": ").append(num(draw(Limits.SEAM_BENDING, true)))
+                    .append(" }").append(fabric && !catalogue ? massField : "").append(" }");
+            } else if (mesh) {
                 // Turned about x only when a fabric's warp [1, 0, 0] must stay in every triangle's plane.
                 String rotation = fabric ? "[" + num(draw(Limits.ROTATION, false)) + ", 0, 0]" : vec(Limits.ROTATION);
                 json.append("\"mesh\": { \"file\": \"").append(meshFile).append("\", \"weld\": ").append(num(r.nextInt(4) == 0 ? 0 : 1e-3 * r.nextDouble()))
