@@ -81,16 +81,21 @@ public final class DistanceBlock extends ConstraintBlock implements LinearLength
         out[3] = -dx * s; out[4] = -dy * s; out[5] = -dz * s;
     }
 
-    @Override void project(int i, Particles p, SolverContext ctx) {
+    @Override void project(int i, Particles p, SolverContext ctx) { projectPair(this, i, particles[2 * i], particles[2 * i + 1], rest[i], p, ctx); }
+
+    /**
+     * The projection of row i of a block whose row is |x_a − x_b| − L (this block's, and a stitch's, whose L
+     * the sewing moves): Δλ by the block's material and mode, the move along n shared by inverse mass.
+     */
+    static void projectPair(ConstraintBlock block, int i, int a, int b, double restLength, Particles p, SolverContext ctx) {
         final double[] x = p.x;
-        final int a = particles[2 * i], b = particles[2 * i + 1];
         final int ia = 3 * a, ib = 3 * b;
         double w0 = p.w[a], w1 = p.w[b];
         double dx = x[ia] - x[ib], dy = x[ia + 1] - x[ib + 1], dz = x[ia + 2] - x[ib + 2];
         double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-        double C = len - rest[i];
+        double C = len - restLength;
         if (len < MIN_LENGTH) return;
-        double dLambda = deltaLambda(i, C, w0 + w1, ctx);
+        double dLambda = block.deltaLambda(i, C, w0 + w1, ctx);
         double s = dLambda / len; // folds n = d/len into the update
         double s0 = w0 * s, s1 = w1 * s;
         x[ia] += s0 * dx; x[ia + 1] += s0 * dy; x[ia + 2] += s0 * dz;

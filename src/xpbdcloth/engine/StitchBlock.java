@@ -48,19 +48,7 @@ public final class StitchBlock extends ConstraintBlock {
 
     @Override public void gradient(int i, Particles p, double[] out) { DistanceBlock.unitGradient(p, a(i), b(i), out); }
 
-    @Override void project(int i, Particles p, SolverContext ctx) {
-        final double[] x = p.x;
-        final int a = particles[2 * i], b = particles[2 * i + 1];
-        final int ia = 3 * a, ib = 3 * b;
-        double w0 = p.w[a], w1 = p.w[b];
-        double dx = x[ia] - x[ib], dy = x[ia + 1] - x[ib + 1], dz = x[ia + 2] - x[ib + 2];
-        double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-        if (len < DistanceBlock.MIN_LENGTH) return;
-        double s = deltaLambda(i, len - rest[i], w0 + w1, ctx) / len;
-        double s0 = w0 * s, s1 = w1 * s;
-        x[ia] += s0 * dx; x[ia + 1] += s0 * dy; x[ia + 2] += s0 * dz;
-        x[ib] -= s1 * dx; x[ib + 1] -= s1 * dy; x[ib + 2] -= s1 * dz;
-    }
+    @Override void project(int i, Particles p, SolverContext ctx) { DistanceBlock.projectPair(this, i, a(i), b(i), rest[i], p, ctx); }
 
     @Override void projectRange(int from, int to, Particles p, SolverContext ctx) {
         for (int i = from; i < to; i++) project(i, p, ctx);

@@ -142,20 +142,20 @@ public final class PatternMesh {
         Outline oa = pattern.panel(seam.a.panel).outline, ob = pattern.panel(seam.b.panel).outline;
         double la = seam.a.length(oa), lb = seam.b.length(ob);
         int n = Math.max(1, (int) Math.round((la + lb) / 2 / edge));
-        List<Double> fractions = new ArrayList<>();
-        for (int k = 0; k <= n; k++) fractions.add((double) k / n);
+        double[] a = innerCorners(seam.a, oa), b = innerCorners(seam.b, ob);
+        // Uniform stitches, then each corner onto the nearest inner stitch not yet moved, or one more stitch after them.
+        double[] out = new double[n + 1 + a.length + b.length];
+        for (int k = 0; k <= n; k++) out[k] = (double) k / n;
         boolean[] moved = new boolean[n + 1];
-        List<Double> extra = new ArrayList<>();
-        for (double c : innerCorners(seam.a, oa)) extra.add(c);
-        for (double c : innerCorners(seam.b, ob)) extra.add(c);
-        List<Double> added = new ArrayList<>();
-        for (double c : extra) {
-            int k = (int) Math.round(c * n);
-            if (k > 0 && k < n && !moved[k]) { fractions.set(k, c); moved[k] = true; }
-            else added.add(c);
-        }
-        fractions.addAll(added);
-        double[] out = fractions.stream().mapToDouble(Double::doubleValue).sorted().toArray();
+        int count = n + 1;
+        for (double[] corners : new double[][] {a, b})
+            for (double c : corners) {
+                int k = (int) Math.round(c * n);
+                if (k > 0 && k < n && !moved[k]) { out[k] = c; moved[k] = true; }
+                else out[count++] = c;
+            }
+        out = Arrays.copyOf(out, count);
+        Arrays.sort(out);
         // Two corners at the same fraction (both sides cornered alike) are one stitch.
         int w = 1;
         for (int i = 1; i < out.length; i++) if (out[i] - out[w - 1] > 1e-9) out[w++] = out[i];
@@ -163,15 +163,16 @@ public final class PatternMesh {
     }
 
     /** Fractions of the stretch's length at which it passes a corner of its outline (ends excluded). */
-    private static List<Double> innerCorners(Stretch st, Outline o) {
-        List<Double> out = new ArrayList<>();
+    private static double[] innerCorners(Stretch st, Outline o) {
         double length = st.length(o), start = o.arcLength(st.from), total = o.length();
-        for (double corner : o.cornerArcLengths()) {
+        double[] corners = o.cornerArcLengths(), out = new double[corners.length];
+        int count = 0;
+        for (double corner : corners) {
             double d = st.backward ? start - corner : corner - start;
             d = ((d % total) + total) % total;
-            if (d > 1e-9 * total && d < length - 1e-9 * total) out.add(d / length);
+            if (d > 1e-9 * total && d < length - 1e-9 * total) out[count++] = d / length;
         }
-        return out;
+        return Arrays.copyOf(out, count);
     }
 
     /**
@@ -304,7 +305,10 @@ public final class PatternMesh {
      * pattern (|e|² the mean of the two sides', eased or not).
      */
     public SeamHinges seamHinges() {
-        List<Double> restAreaOverEdgeSquared = new ArrayList<>();
+        int count = 0;
+        for (int[] pairs : stitches.values()) count += Math.max(0, pairs.length / 2 - 1);
+        int[] hinge = new int[4 * count];
+        double[] rest = new double[count];
         Map<Long, Integer> opposite = new java.util.HashMap<>();  // directed boundary edge a→b (CCW) → opposite vertex
         Map<Long, Integer> uses = new java.util.HashMap<>();
         for (int t = 0; t < triangles.length; t += 3)
@@ -313,7 +317,7 @@ public final class PatternMesh {
                 uses.merge(undirected(a, b), 1, Integer::sum);
                 opposite.put((long) a << 32 | b, triangles[t + (k + 2) % 3]);
             }
-        List<Integer> out = new ArrayList<>();
+        int h = 0;
         for (int[] pairs : stitches.values())
             for (int k = 0; k + 3 < pairs.length; k += 2) {
                 int a0 = pairs[k], b0 = pairs[k + 1], a1 = pairs[k + 2], b1 = pairs[k + 3];
@@ -323,10 +327,11 @@ public final class PatternMesh {
                 if (o0 == null || o1 == null || uses.get(undirected(e0, e1)) != 1 || uses.get(undirected(f0, f1)) != 1)
                     throw new IllegalStateException("stitches " + k / 2 + " and " + (k / 2 + 1) + " are not an outline edge on both sides");
                 double e2 = (flatDistance2(e0, e1) + flatDistance2(f0, f1)) / 2;
-                restAreaOverEdgeSquared.add((flatArea(o0, e0, e1) + flatArea(o1, f0, f1)) / e2);
-                out.add(o0); out.add(o1); out.add(e0); out.add(e1);
+                rest[h] = (flatArea(o0, e0, e1) + flatArea(o1, f0, f1)) / e2;
+                hinge[4 * h] = o0; hinge[4 * h + 1] = o1; hinge[4 * h + 2] = e0; hinge[4 * h + 3] = e1;
+                h++;
             }
-        return new SeamHinges(out.stream().mapToInt(Integer::intValue).toArray(), restAreaOverEdgeSquared.stream().mapToDouble(Double::doubleValue).toArray());
+        return new SeamHinges(hinge, rest);
     }
 
     private static long undirected(int a, int b) { return (long) Math.min(a, b) << 32 | Math.max(a, b); }
