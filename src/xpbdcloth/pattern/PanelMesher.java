@@ -34,7 +34,7 @@ public final class PanelMesher {
     /** DistMesh's step along the net bar force. */
     private static final double STEP = 0.2;
 
-    /** Positions (x, y per point: the outline's samples first, in order, then the inside points) and triangles. */
+    /** Positions (x, y per point: the outline's samples first, in order, then any fixed points, then the inside points) and triangles. */
     public static final class Result {
         public final double[] points;
         /** Three point indices per triangle, counter-clockwise. */
@@ -52,8 +52,17 @@ public final class PanelMesher {
      *                the target
      * @param edge    the target edge length (m)
      */
-    public static Result mesh(double[] outline, double edge) {
-        int nb = outline.length / 2;
+    public static Result mesh(double[] outline, double edge) { return mesh(outline, new double[0], edge); }
+
+    /**
+     * As {@link #mesh(double[], double)}, with points inside that stay where they are given and become
+     * vertices (a line the cloth must have vertices on: a clamp's edge, say); they follow the outline's
+     * samples in the result, in order. They should be about an edge apart and inside the outline.
+     *
+     * @param fixed x, y pairs, each inside the outline and not on it
+     */
+    public static Result mesh(double[] outline, double[] fixed, double edge) {
+        int nb = outline.length / 2, nf = fixed.length / 2;
         GeometryFactory gf = new GeometryFactory();
         Coordinate[] ring = new Coordinate[nb + 1];
         for (int i = 0; i < nb; i++) ring[i] = new Coordinate(outline[2 * i], outline[2 * i + 1]);
@@ -63,6 +72,11 @@ public final class PanelMesher {
 
         List<double[]> points = new ArrayList<>();
         for (int i = 0; i < nb; i++) points.add(new double[] {outline[2 * i], outline[2 * i + 1]});
+        for (int i = 0; i < nf; i++) {
+            if (inside.locate(new Coordinate(fixed[2 * i], fixed[2 * i + 1])) != Location.INTERIOR)
+                throw new IllegalArgumentException("fixed point " + i + " (" + fixed[2 * i] + ", " + fixed[2 * i + 1] + ") must lie inside the outline");
+            points.add(new double[] {fixed[2 * i], fixed[2 * i + 1]});
+        }
         var env = area.getEnvelopeInternal();
         double rowHeight = edge * Math.sqrt(3) / 2;
         // Jittered by a hundredth of an edge (seeded: the same mesh every time): a perfect lattice against
@@ -73,7 +87,7 @@ public final class PanelMesher {
             double y = env.getMinY() + row * rowHeight;
             for (double x = env.getMinX() + (row % 2) * edge / 2; x <= env.getMaxX(); x += edge) {
                 double jx = x + 0.01 * edge * (jitter.nextDouble() - 0.5), jy = y + 0.01 * edge * (jitter.nextDouble() - 0.5);
-                if (allowed(jx, jy, outline, inside, edge)) points.add(new double[] {jx, jy});
+                if (allowed(jx, jy, outline, inside, edge) && clearOf(fixed, jx, jy, 0.6 * edge)) points.add(new double[] {jx, jy});
             }
         }
 
@@ -94,7 +108,7 @@ public final class PanelMesher {
                 force[2 * a] += push * dx; force[2 * a + 1] += push * dy;
                 force[2 * b] -= push * dx; force[2 * b + 1] -= push * dy;
             }
-            for (int i = nb; i < points.size(); i++) {
+            for (int i = nb + nf; i < points.size(); i++) {
                 double[] p = points.get(i);
                 double x = p[0] + STEP * force[2 * i], y = p[1] + STEP * force[2 * i + 1];
                 if (allowed(x, y, outline, inside, edge)) { p[0] = x; p[1] = y; }
@@ -119,6 +133,15 @@ public final class PanelMesher {
             // (a − p)·(b − p) < 0: p sees the segment under more than a right angle, inside its diametral circle.
             double dot = ax * bx + ay * by, margin = 0.1 * ((ax - bx) * (ax - bx) + (ay - by) * (ay - by));
             if (dot < margin || ax * ax + ay * ay < 0.04 * edge * edge) return false;
+        }
+        return true;
+    }
+
+    /** Whether (x, y) is at least {@code distance} from every fixed point. */
+    private static boolean clearOf(double[] fixed, double x, double y, double distance) {
+        for (int i = 0; i < fixed.length; i += 2) {
+            double dx = fixed[i] - x, dy = fixed[i + 1] - y;
+            if (dx * dx + dy * dy < distance * distance) return false;
         }
         return true;
     }

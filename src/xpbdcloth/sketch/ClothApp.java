@@ -139,9 +139,11 @@ public final class ClothApp {
 
     /** A mesh cloth is framed by its rest bounding box; a flat-lying one (it will fall and drape) from higher up. */
     private void frameMesh(ClothMesh m) {
-        double height = m.max(1) - m.min(1);
-        double size = Math.max(Math.max(m.max(0) - m.min(0), height), Math.max(m.max(2) - m.min(2), 0.6));
-        boolean lying = height < 0.2 * size;
+        double height = m.max(1) - m.min(1), extent = Math.max(Math.max(m.max(0) - m.min(0), height), m.max(2) - m.min(2));
+        boolean lying = height < 0.2 * Math.max(extent, 0.6);
+        // A lying cloth is seen close enough to show its folds even when small (the drape tester's 30 cm
+        // specimen); anything else at least as if it were 0.6 m across.
+        double size = Math.max(extent, lying ? 0.3 : 0.6);
         double cy = lying ? m.max(1) - 0.3 * size : 0.5 * (m.min(1) + m.max(1));
         double distance = size * (framedSideBySide ? 2.6 : 1.5) + 0.4;
         Framing.belowHud(camera, restBox(), app.width, app.height, 0.5 * (m.min(0) + m.max(0)), cy, 0.5 * (m.min(2) + m.max(2)), distance, lying ? -0.55 : -0.15);

@@ -136,7 +136,11 @@ class TrajectoryHashTest {
             Map.entry("skirt/xpbd", "1ae7dd6cde79d44f"),
             Map.entry("skirt/pbd", "1b357bc20cb108aa"),
             Map.entry("skirt/coloured", "b8fe59c5dba062cc"),
-            Map.entry("skirt/coloured-2-threads", "b8fe59c5dba062cc"));
+            Map.entry("skirt/coloured-2-threads", "b8fe59c5dba062cc"),
+            Map.entry("drape-tester/xpbd", "869564a5ae58381d"),
+            Map.entry("drape-tester/pbd", "bf741bf5f2b03f39"),
+            Map.entry("drape-tester/coloured", "869564a5ae58381d"),
+            Map.entry("drape-tester/coloured-2-threads", "869564a5ae58381d"));
 
     static String variantHash(String scene, String variant) {
         Simulation sim = Scene.builtIn(scene).simulation();

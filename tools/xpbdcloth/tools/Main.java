@@ -12,7 +12,7 @@ import xpbdcloth.sketch.Launcher;
 /** The command line: opens the sketch, records frames, runs the benchmark. */
 @Command(name = "xpbd-cloth", mixinStandardHelpOptions = true, showDefaultValues = true, version = "xpbd-cloth 0.1.0",
         description = "Real-time PBD/XPBD cloth. With no command, opens the sketch.",
-        subcommands = {Main.Record.class, Main.CheckCommand.class, Main.BenchCommand.class, FitCommand.class, PatternCommand.class, DrapeCommand.class, xpbdcloth.experiments.Experiments.class})
+        subcommands = {Main.Record.class, Main.CheckCommand.class, Main.BenchCommand.class, FitCommand.class, PatternCommand.class, DrapeCommand.class, DrapeCoefficientCommand.class, xpbdcloth.experiments.Experiments.class})
 public final class Main implements Callable<Integer> {
     /** What both the window and the recorder take: the scene, the layout, the size, the solver threads. */
     static final class SketchOptions {
