@@ -18,11 +18,12 @@ import java.util.Arrays;
  *
  * <p>Response: the motion of an event's four particles is cut back to {@link #BACKOFF} of the time of
  * contact τ, less what would bring them within a small gap of each other (each particle's own fraction fᵢ
- * of its move, xᵢ = x_startᵢ + fᵢ (x_endᵢ − x_startᵢ), multiplied by the smallest over its events; see
- * {@link #keep}), and the pass is repeated on the cut motion until it finds none. After {@link #CUT_PASSES}
- * passes an event's particles are put back where the substep began (f = 0): that state was clean, so the
- * passes end (Bridson et al.'s rigid impact zones play this part there; putting the particles back is the
- * cruder, always-terminating version: they lose the substep's velocity, an inelastic stop). Pinned
+ * of its move, xᵢ = x_startᵢ + fᵢ (x_endᵢ − x_startᵢ), multiplied by the smallest over its events, a
+ * stitched group's particles by the smallest over the group's; see {@link #keep}), and the pass is
+ * repeated on the cut motion until it finds none. After {@link #CUT_PASSES} passes an event's particles
+ * are put back where the substep began (f = 0): that state was clean, so the passes end (Bridson et
+ * al.'s rigid impact zones play this part there; putting the particles back is the cruder,
+ * always-terminating version: they lose the substep's velocity, an inelastic stop). Pinned
  * particles (inverse mass 0) move as their scripts say and are never cut. The cloth's thickness is kept by
  * the particle pairs of {@link SelfCollision} inside the solve; this guard only makes sure that what slips
  * past them does not pass through.
@@ -104,6 +105,12 @@ public final class CrossingGuard implements Team.Job {
     private long events, unresolved, passes;
     /** Each particle's representative: features with one in common are neighbours, never an event. */
     private final int[] same;
+    /**
+     * Per representative, the smallest cut of a pass over its particles (null when every particle is its
+     * own): a welded group moves as one point, so its particles are cut back together. Cut one by one, the
+     * weld after the step would pull them together again where the guard never looks.
+     */
+    private final double[] groupCut;
 
     /**
      * @param triangles the cloth's triangles, 3 particle indices each
@@ -133,6 +140,9 @@ public final class CrossingGuard implements Team.Job {
             this.same[i] = same == null ? i : same[i];
             if (this.same[i] < 0 || this.same[i] >= particles) throw new IllegalArgumentException("same[" + i + "] must be a particle in [0, " + particles + "), was " + this.same[i]);
         }
+        boolean grouped = false;
+        for (int i = 0; i < particles; i++) grouped |= this.same[i] != i;
+        groupCut = grouped ? new double[particles] : null;
         final TriangleEdges numbered = TriangleEdges.of(this.triangles, particles);
         edges = numbered.ends();
         triangleEdges = numbered.edgeOfSides();
@@ -206,9 +216,12 @@ public final class CrossingGuard implements Team.Job {
             for (Share sh : shares) found += sh.found;
             if (found == 0) return;
             events += found;
+            if (groupCut != null) {
+                Arrays.fill(groupCut, 1);
+                for (int i = 0; i < n; i++) groupCut[same[i]] = Math.min(groupCut[same[i]], cut(i, threads));
+            }
             for (int i = 0; i < n; i++) {
-                double c = shares[0].cut[i];
-                for (int t = 1; t < threads; t++) c = Math.min(c, shares[t].cut[i]);
+                final double c = groupCut != null ? groupCut[same[i]] : cut(i, threads);
                 if (c == 1 || w[i] == 0) continue;
                 fraction[i] *= c;
                 final int k = 3 * i;
@@ -219,6 +232,13 @@ public final class CrossingGuard implements Team.Job {
             }
         }
         unresolved += found;
+    }
+
+    /** Particle i's cut in this pass: the smallest any thread's events gave it. */
+    private double cut(int i, int threads) {
+        double c = shares[0].cut[i];
+        for (int t = 1; t < threads; t++) c = Math.min(c, shares[t].cut[i]);
+        return c;
     }
 
     /** A pass on the team: each thread its share of the vertices and of the edges. */
