@@ -17,13 +17,13 @@ public final class ShadowArea {
      */
     public static double of(double[] positions, int[] triangles, double cell) {
         if (!(cell > 0) || !Double.isFinite(cell)) throw new IllegalArgumentException("cell must be > 0, was " + cell);
+        if (triangles.length == 0) return 0;
         double minX = Double.MAX_VALUE, minZ = Double.MAX_VALUE, maxX = -Double.MAX_VALUE, maxZ = -Double.MAX_VALUE;
         for (int t = 0; t < triangles.length; t++) {
             int v = triangles[t];
             minX = Math.min(minX, positions[3 * v]); maxX = Math.max(maxX, positions[3 * v]);
             minZ = Math.min(minZ, positions[3 * v + 2]); maxZ = Math.max(maxZ, positions[3 * v + 2]);
         }
-        if (triangles.length == 0) return 0;
         long columnsLong = (long) Math.ceil((maxX - minX) / cell) + 1, rowsLong = (long) Math.ceil((maxZ - minZ) / cell) + 1;
         if (columnsLong * rowsLong > 100_000_000L)
             throw new IllegalArgumentException("cell " + cell + " m makes a grid of " + columnsLong + " x " + rowsLong + " cells over the shadow; take a larger cell");

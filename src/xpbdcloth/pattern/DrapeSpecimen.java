@@ -47,15 +47,10 @@ public final class DrapeSpecimen {
         return ClothMesh.withTextureCoordinates(x, faces, uvs, null, groups);
     }
 
-    /** Points round a circle, counter-clockwise, as near {@code edge} apart as a whole number of them allows. */
+    /** A circle as the patterns' outlines are drawn (two half-circle arcs), sampled as near {@code edge} apart as a whole number of points allows. */
     private static double[] circle(double radius, double edge) {
-        int count = Math.max(8, (int) Math.round(2 * Math.PI * radius / edge));
-        double[] out = new double[2 * count];
-        for (int i = 0; i < count; i++) {
-            double a = 2 * Math.PI * i / count;
-            out[2 * i] = radius * Math.cos(a);
-            out[2 * i + 1] = radius * Math.sin(a);
-        }
-        return out;
+        double[] east = {radius, 0}, west = {-radius, 0};
+        Outline circle = new Outline(new double[][] {east, west}, new Curve[] {Curve.arc(east, west, radius), Curve.arc(west, east, radius)});
+        return circle.samples(Math.max(8, (int) Math.round(circle.length() / edge)));
     }
 }

@@ -86,15 +86,24 @@ public final class Outline {
 
     /** True when the corners run counter-clockwise (the pattern plane's normal, +z, is the panel's face). */
     public boolean counterClockwise() {
-        double twice = 0, prev[] = new double[2], p[] = new double[2];
-        int n = edges.length * PIECES_PER_CURVE;
-        pointAt(0, prev);
-        for (int i = 1; i <= n; i++) {
-            pointAt(length() * i / n, p);
-            twice += prev[0] * p[1] - p[0] * prev[1];
-            prev[0] = p[0]; prev[1] = p[1];
+        double[] p = samples(edges.length * PIECES_PER_CURVE);
+        double twice = 0;
+        for (int i = 0, n = p.length / 2; i < n; i++) {
+            int j = (i + 1) % n;
+            twice += p[2 * i] * p[2 * j + 1] - p[2 * j] * p[2 * i + 1];
         }
         return twice > 0;
+    }
+
+    /** {@code count} points at equal arc lengths round the outline from corner 0, in its order: x, y each. */
+    public double[] samples(int count) {
+        if (count < 3) throw new IllegalArgumentException("count must be at least 3, was " + count);
+        double[] out = new double[2 * count], p = new double[2];
+        for (int i = 0; i < count; i++) {
+            pointAt(length() * i / count, p);
+            out[2 * i] = p[0]; out[2 * i + 1] = p[1];
+        }
+        return out;
     }
 
     /** The outline as a polygon, each edge cut into {@code pieces} chords of equal arc length. */

@@ -42,11 +42,22 @@ public final class PresetLoader {
 
     /** A built-in preset by name (from the jar), e.g. "hanging". */
     public static Preset builtIn(String name) {
+        return parse(name + ".json", builtInText(name), BUILT_IN_FILES);
+    }
+
+    /**
+     * A built-in preset whose mesh files are looked for in {@code folder} first (the jar's where the folder
+     * has none): the same scene on another mesh of the same name, e.g. a specimen meshed finer.
+     */
+    public static Preset builtIn(String name, Path folder) {
+        return parseBeside(name + ".json", builtInText(name), folder);
+    }
+
+    private static String builtInText(String name) {
         String file = name + ".json";
         try (InputStream in = PresetLoader.class.getResourceAsStream("/presets/" + file)) {
             if (in == null) throw new PresetException(name, "(file)", "no built-in preset of that name; built-in: " + String.join(", ", BUILT_IN));
-            String text = new String(in.readAllBytes(), StandardCharsets.UTF_8);
-            return parse(file, text, BUILT_IN_FILES);
+            return new String(in.readAllBytes(), StandardCharsets.UTF_8);
         } catch (IOException e) {
             throw new PresetException(file, "(file)", "cannot be read: " + e.getMessage());
         }

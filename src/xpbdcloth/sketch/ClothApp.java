@@ -120,6 +120,9 @@ public final class ClothApp {
         Framing.belowHud(camera, restBox(), app.width, app.height, cx, cy, c.origin[2], distance, pitch);
     }
 
+    /** The smallest cloth the camera frames as it is (m), the drape tester's 30 cm specimen; smaller ones are seen as this size. */
+    static final double SMALLEST_FRAMED = 0.3;
+
     /** The running cloths' rest box {min x, y, z, max x, y, z}, side by side both (each at its offset). */
     private double[] restBox() {
         double[] box = {Double.MAX_VALUE, Double.MAX_VALUE, Double.MAX_VALUE, -Double.MAX_VALUE, -Double.MAX_VALUE, -Double.MAX_VALUE};
@@ -137,13 +140,14 @@ public final class ClothApp {
         return box;
     }
 
-    /** A mesh cloth is framed by its rest bounding box; a flat-lying one (it will fall and drape) from higher up. */
+    /**
+     * A mesh cloth is framed by its rest bounding box, seen as if it were at least {@link #SMALLEST_FRAMED}
+     * across; a flat-lying one (it will fall and drape) from higher up.
+     */
     private void frameMesh(ClothMesh m) {
         double height = m.max(1) - m.min(1), extent = Math.max(Math.max(m.max(0) - m.min(0), height), m.max(2) - m.min(2));
-        boolean lying = height < 0.2 * Math.max(extent, 0.6);
-        // A lying cloth is seen close enough to show its folds even when small (the drape tester's 30 cm
-        // specimen); anything else at least as if it were 0.6 m across.
-        double size = Math.max(extent, lying ? 0.3 : 0.6);
+        double size = Math.max(extent, SMALLEST_FRAMED);
+        boolean lying = height < 0.2 * size;
         double cy = lying ? m.max(1) - 0.3 * size : 0.5 * (m.min(1) + m.max(1));
         double distance = size * (framedSideBySide ? 2.6 : 1.5) + 0.4;
         Framing.belowHud(camera, restBox(), app.width, app.height, 0.5 * (m.min(0) + m.max(0)), cy, 0.5 * (m.min(2) + m.max(2)), distance, lying ? -0.55 : -0.15);

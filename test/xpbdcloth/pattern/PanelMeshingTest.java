@@ -70,6 +70,16 @@ class PanelMeshingTest {
         double[] p = new double[2];
         disc.pointAt(disc.length() / 4, p);
         assertArrayEquals(new double[] {0, -r}, p, 1e-12, "a quarter of the way round from (−r, 0), counter-clockwise, is the bottom");
+        // Twelve samples at equal arc lengths: on the circle, from corner 0, each a chord 2r sin(π/12) from the next.
+        double[] twelve = disc.samples(12);
+        assertArrayEquals(new double[] {-r, 0}, new double[] {twelve[0], twelve[1]}, 1e-15);
+        for (int i = 0; i < 12; i++) {
+            int j = (i + 1) % 12;
+            assertEquals(r, Math.hypot(twelve[2 * i], twelve[2 * i + 1]), 1e-15);
+            assertEquals(2 * r * Math.sin(Math.PI / 12), Math.hypot(twelve[2 * j] - twelve[2 * i], twelve[2 * j + 1] - twelve[2 * i + 1]), 1e-15);
+        }
+        assertTrue(disc.counterClockwise());
+        assertThrows(IllegalArgumentException.class, () -> disc.samples(2));
         // A major arc: a chord of 2 bulging 1.5 is an arc of radius (1 + 2.25)/3 round more than half its circle.
         Curve major = Curve.arc(new double[] {0, 0}, new double[] {2, 0}, 1.5);
         double radius = 3.25 / 3, half = Math.asin(1 / radius);

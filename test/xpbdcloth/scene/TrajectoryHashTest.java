@@ -141,10 +141,10 @@ class TrajectoryHashTest {
             Map.entry("bordered-tablecloth/pbd", "8bd6c5735eac5d40"),
             Map.entry("bordered-tablecloth/coloured", "9561019e8fb50056"),
             Map.entry("bordered-tablecloth/coloured-2-threads", "9561019e8fb50056"),
-            Map.entry("drape-tester/xpbd", "869564a5ae58381d"),
-            Map.entry("drape-tester/pbd", "bf741bf5f2b03f39"),
-            Map.entry("drape-tester/coloured", "869564a5ae58381d"),
-            Map.entry("drape-tester/coloured-2-threads", "869564a5ae58381d"));
+            Map.entry("drape-tester/xpbd", "2d305a4d8692e416"),
+            Map.entry("drape-tester/pbd", "819c2110c75e64ef"),
+            Map.entry("drape-tester/coloured", "2d305a4d8692e416"),
+            Map.entry("drape-tester/coloured-2-threads", "2d305a4d8692e416"));
 
     static String variantHash(String scene, String variant) {
         Simulation sim = Scene.builtIn(scene).simulation();
