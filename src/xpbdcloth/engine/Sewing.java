@@ -31,7 +31,9 @@ public final class Sewing implements AfterStep {
     private final DihedralBlock hinges;
     private final double[] startGap;
     private final double time, seamFactor;
-    private double bendingStiffness, elapsed;
+    /** Each seam hinge's fabric bending stiffness B, N·m (the mean of its two sides' where they differ). */
+    private final double[] bendingStiffness;
+    private double elapsed;
     /** Whether the stitches hold hard (their pulling done), and whether the seams have closed. */
     private boolean holding, closed;
 
@@ -46,12 +48,22 @@ public final class Sewing implements AfterStep {
      */
     public Sewing(Particles p, int[] stitchPairs, int[] hinges, double[] restAreaOverEdgeSquared, double time, double compliance,
                   double bendingStiffness, double seamFactor) {
+        this(p, stitchPairs, hinges, restAreaOverEdgeSquared, time, compliance,
+                filled(restAreaOverEdgeSquared.length, Check.inRange("bendingStiffness", bendingStiffness, Double.MIN_NORMAL, 1e6)), seamFactor);
+    }
+
+    /** As above, each seam hinge with its own fabric bending stiffness (a seam between panels of two fabrics). */
+    public Sewing(Particles p, int[] stitchPairs, int[] hinges, double[] restAreaOverEdgeSquared, double time, double compliance,
+                  double[] bendingStiffness, double seamFactor) {
         if (stitchPairs.length % 2 != 0) throw new IllegalArgumentException("stitchPairs must be pairs, was " + stitchPairs.length + " numbers");
         if (hinges.length != 4 * restAreaOverEdgeSquared.length)
             throw new IllegalArgumentException("hinges must be 4 particles per rest value (" + 4 * restAreaOverEdgeSquared.length + "), was " + hinges.length);
         this.time = Check.inRange("time", time, 0, 1e6);
         Check.inRange("compliance", compliance, 0, EngineRange.MAX_COMPLIANCE);
-        this.bendingStiffness = Check.inRange("bendingStiffness", bendingStiffness, Double.MIN_NORMAL, 1e6);
+        if (bendingStiffness.length != restAreaOverEdgeSquared.length)
+            throw new IllegalArgumentException("bendingStiffness must have one value per hinge (" + restAreaOverEdgeSquared.length + "), was " + bendingStiffness.length);
+        for (int h = 0; h < bendingStiffness.length; h++) Check.inRange("bendingStiffness[" + h + "]", bendingStiffness[h], Double.MIN_NORMAL, 1e6);
+        this.bendingStiffness = bendingStiffness.clone();
         this.seamFactor = Check.inRange("seamFactor", seamFactor, 1e-3, 1e3);
         stitches = new StitchBlock(Math.max(1, stitchPairs.length / 2));
         startGap = new double[stitchPairs.length / 2];
@@ -99,7 +111,7 @@ public final class Sewing implements AfterStep {
         double left = 1 - elapsed / time;
         if (left < HINGES_FROM) {
             double ramp = (HINGES_FROM - left) / HINGES_FROM;
-            bendHinges(seamFactor * bendingStiffness * ramp * ramp);
+            bendHinges(ramp);
         }
     }
 
@@ -206,13 +218,25 @@ public final class Sewing implements AfterStep {
     private void close() {
         closed = true;
         holdHard();
-        bendHinges(seamFactor * bendingStiffness);
+        bendHinges(1);
         floating = null;
     }
 
-    /** The hinges across the seams at bending stiffness b (N·m); as compliant as the engine allows where that is softer. */
-    private void bendHinges(double b) {
-        for (int h = 0; h < hinges.count(); h++) hinges.setCompliance(h, Math.min(EngineRange.MAX_COMPLIANCE, hinges.areaOverEdgeSquared[h] / b));
+    /**
+     * The hinges across the seams at bending stiffness seamFactor · B · ramp² (N·m), the ramp rising to 1 as
+     * the seams close; as compliant as the engine allows where that is softer.
+     */
+    private void bendHinges(double ramp) {
+        for (int h = 0; h < hinges.count(); h++) {
+            double b = seamFactor * bendingStiffness[h] * ramp * ramp;
+            hinges.setCompliance(h, Math.min(EngineRange.MAX_COMPLIANCE, hinges.areaOverEdgeSquared[h] / b));
+        }
+    }
+
+    private static double[] filled(int n, double value) {
+        double[] out = new double[n];
+        java.util.Arrays.fill(out, value);
+        return out;
     }
 
     @Override public void check(List<ConstraintBlock> blocks) {
@@ -222,8 +246,8 @@ public final class Sewing implements AfterStep {
 
     /** A new fabric's bending stiffness: the seams bend with it (times the seam factor) once closed. */
     public void useBendingStiffness(double b) {
-        bendingStiffness = Check.inRange("bendingStiffness", b, Double.MIN_NORMAL, 1e6);
-        if (closed) bendHinges(seamFactor * bendingStiffness);
+        java.util.Arrays.fill(bendingStiffness, Check.inRange("bendingStiffness", b, Double.MIN_NORMAL, 1e6));
+        if (closed) bendHinges(1);
     }
 
     public boolean closed() { return closed; }

@@ -257,6 +257,19 @@ public final class PatternMesh {
     /** Triangles [first, last) of the i-th panel. */
     public int[] panelTriangleRange(int i) { return new int[] {panelTriangles[i], panelTriangles[i + 1]}; }
 
+    /** Each vertex's panel (its index in the pattern's order). */
+    public int[] panelOfVertex() { return panelOf(panelVertices); }
+
+    /** Each triangle's panel. */
+    public int[] panelOfTriangle() { return panelOf(panelTriangles); }
+
+    /** Each item's panel, from the panels' first items (and the total last). */
+    private static int[] panelOf(int[] firsts) {
+        int[] out = new int[firsts[firsts.length - 1]];
+        for (int p = 0; p + 1 < firsts.length; p++) java.util.Arrays.fill(out, firsts[p], firsts[p + 1], p);
+        return out;
+    }
+
     /** The seam's stitches: vertex pairs (side a, side b), start to end. */
     public int[] stitches(String seam) { return stitches.get(seam).clone(); }
 

@@ -139,13 +139,18 @@ public final class Preset {
      */
     public static final class GarmentSpec {
         public final xpbdcloth.pattern.PatternMesh pattern;
+        /** The garment's fabric: the preset's if it gives one, else its first panel's. */
         public final FabricSpec fabric;
+        /** Each panel's fabric, in the pattern's order: the preset's for all if it gives one, else each panel's own. */
+        private final xpbdcloth.fabric.Fabric[] panelFabrics;
         public final double sewingTime, sewingCompliance, seamBending;
 
-        GarmentSpec(xpbdcloth.pattern.PatternMesh pattern, FabricSpec fabric, double sewingTime, double sewingCompliance, double seamBending) {
-            this.pattern = pattern; this.fabric = fabric;
+        GarmentSpec(xpbdcloth.pattern.PatternMesh pattern, FabricSpec fabric, xpbdcloth.fabric.Fabric[] panelFabrics, double sewingTime, double sewingCompliance, double seamBending) {
+            this.pattern = pattern; this.fabric = fabric; this.panelFabrics = panelFabrics.clone();
             this.sewingTime = sewingTime; this.sewingCompliance = sewingCompliance; this.seamBending = seamBending;
         }
+
+        public xpbdcloth.fabric.Fabric[] panelFabrics() { return panelFabrics.clone(); }
     }
 
     /** A bend sharper than the yield curvature (1/m) moves its rest angle at the rate (1/s): a crease ({@link xpbdcloth.engine.HingePlasticity}). */

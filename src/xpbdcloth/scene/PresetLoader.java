@@ -400,8 +400,8 @@ public final class PresetLoader {
 
         /**
          * A garment from a pattern (a built-in name or a file beside the preset), meshed at the pattern's edge
-         * length or the cloth's own, and how it is sewn. Its fabric is the panels' (all one) unless the preset
-         * gives one.
+         * length or the cloth's own, and how it is sewn. Each panel is its own fabric unless the preset gives one
+         * for all.
          */
         Preset.Cloth garmentCloth(Node n, Preset.FabricSpec fabric) {
             object(n, Set.of("pattern", "edge", "sewing", "arealDensity", "totalMass"));
@@ -417,7 +417,10 @@ public final class PresetLoader {
             double edge = e == null ? loaded.edge : number(e, Limits.PATTERN_EDGE);
             String tooFine = PatternLoader.edgeProblem(loaded.pattern, edge);
             if (tooFine != null) throw fail(e == null ? pn.path : e.path, name + ": " + tooFine);
-            Preset.FabricSpec cut = fabric != null ? fabric : new Preset.FabricSpec(commonFabric(pn, loaded.pattern), null, false, null, false);
+            List<xpbdcloth.pattern.Panel> panels = loaded.pattern.panels();
+            Fabric[] panelFabrics = new Fabric[panels.size()];
+            for (int i = 0; i < panelFabrics.length; i++) panelFabrics[i] = fabric != null ? fabric.fabric : FabricCatalogue.named(panels.get(i).fabric);
+            Preset.FabricSpec cut = fabric != null ? fabric : new Preset.FabricSpec(panelFabrics[0], null, false, null, false);
             Node s = optional(n, "sewing");
             double time = 1.5, compliance = 1e-6, seam = 1;
             if (s != null) {
@@ -429,16 +432,7 @@ public final class PresetLoader {
             }
             double[] mass = mass(n, cut);
             xpbdcloth.pattern.PatternMesh mesh = loaded.mesh(edge);
-            return new Preset.Cloth(mesh.toClothMesh(), name, mass[0], mass[1], new int[0], new Preset.GarmentSpec(mesh, cut, time, compliance, seam));
-        }
-
-        /** The one fabric all of a pattern's panels are cut from. */
-        xpbdcloth.fabric.Fabric commonFabric(Node field, xpbdcloth.pattern.Pattern pattern) {
-            java.util.Set<String> names = new java.util.TreeSet<>();
-            for (xpbdcloth.pattern.Panel p : pattern.panels()) names.add(p.fabric);
-            if (names.size() > 1)
-                throw fail(field.path, "the panels are cut from " + String.join(", ", names) + "; a garment of several fabrics is not simulated yet: give the preset one \"fabric\"");
-            return FabricCatalogue.named(names.iterator().next());
+            return new Preset.Cloth(mesh.toClothMesh(), name, mass[0], mass[1], new int[0], new Preset.GarmentSpec(mesh, cut, panelFabrics, time, compliance, seam));
         }
 
         /**

@@ -10,6 +10,7 @@ import xpbdcloth.fabric.Fabric;
 import xpbdcloth.fabric.FabricConstraints;
 import xpbdcloth.fabric.FabricSwap;
 import xpbdcloth.fabric.MeasuredStiffening;
+import xpbdcloth.fabric.PanelFabrics;
 import xpbdcloth.engine.Cloth;
 import xpbdcloth.engine.ClothBuilder;
 import xpbdcloth.engine.MeshClothBuilder;
@@ -49,6 +50,8 @@ public final class Scene {
     private double presetAmount = Double.NaN;
     /** Whether the fabric bends by dihedral hinges (a bent rest, or yielding) rather than plate patches. */
     private boolean bendsByHinges;
+    /** A garment's panels' fabrics now (the preset's, until {@link #useFabric} makes them all one), or null. */
+    private Fabric[] panelFabrics;
     /** A garment's sewing, or null; and its particles' representatives once sewn ({@link xpbdcloth.pattern.PatternMesh#welded}). */
     private Sewing sewing;
     private int[] welded;
@@ -67,6 +70,10 @@ public final class Scene {
             double[] warp = f.warp != null ? f.warp : FabricConstraints.warpFromTextureCoordinates(cloth.particles(), cloth.triangles(), preset.cloth.mesh.triangleUVs());
             for (ConstraintBlock b : FabricConstraints.build(cloth.particles(), cloth.triangles(), warp, f.fabric.membrane, f.fabric.bendingStiffness, f.tethers, f.plasticity != null))
                 simulation.add(b);
+            if (garment != null) {
+                panelFabrics = garment.panelFabrics();
+                PanelFabrics.apply(simulation.blocks(), cloth.particles(), garment.pattern.panelOfVertex(), garment.pattern.panelOfTriangle(), panelFabrics);
+            }
             if (placed != null) for (int i = 0; i < cloth.particles().count(); i++) cloth.particles().setPosition(i, placed[3 * i], placed[3 * i + 1], placed[3 * i + 2]);
             if (f.plasticity != null) {
                 plasticity = new HingePlasticity(simulation.blocks(), cloth.particles(), f.plasticity.yieldCurvature, f.plasticity.rate);
@@ -81,8 +88,13 @@ public final class Scene {
         }
         if (garment != null) {
             xpbdcloth.pattern.PatternMesh.SeamHinges hinges = garment.pattern.seamHinges();
+            // A seam between two fabrics bends as their mean.
+            int[] panelOf = garment.pattern.panelOfVertex();
+            double[] seamStiffness = new double[hinges.restAreaOverEdgeSquared.length];
+            for (int h = 0; h < seamStiffness.length; h++)
+                seamStiffness[h] = (panelFabrics[panelOf[hinges.particles[4 * h]]].bendingStiffness + panelFabrics[panelOf[hinges.particles[4 * h + 1]]].bendingStiffness) / 2;
             sewing = new Sewing(cloth.particles(), garment.pattern.allStitches(), hinges.particles, hinges.restAreaOverEdgeSquared,
-                    garment.sewingTime, garment.sewingCompliance, fabric.bendingStiffness, garment.seamBending);
+                    garment.sewingTime, garment.sewingCompliance, seamStiffness, garment.seamBending);
             for (ConstraintBlock b : sewing.blocks()) simulation.add(b);
             simulation.add(sewing.weightless(simulation));
             welded = garment.pattern.welded();
@@ -227,10 +239,29 @@ public final class Scene {
      */
     public void useFabric(Fabric next) {
         if (fabric == null) throw new IllegalArgumentException("fabric: this cloth is springs, not a fabric (its preset has no \"fabric\" block)");
-        FabricSwap.apply(simulation.blocks(), cloth.particles(), next);
+        if (panelFabrics != null) {
+            java.util.Arrays.fill(panelFabrics, next);
+            Preset.GarmentSpec garment = preset.cloth.garment;
+            PanelFabrics.apply(simulation.blocks(), cloth.particles(), garment.pattern.panelOfVertex(), garment.pattern.panelOfTriangle(), panelFabrics);
+        } else FabricSwap.apply(simulation.blocks(), cloth.particles(), next);
         if (stiffening != null) stiffening.use(next.stretchingCurve);
         if (sewing != null) sewing.useBendingStiffness(next.bendingStiffness);
         fabric = next;
+    }
+
+    /**
+     * Which panels of a garment of several fabrics are cut from which, in the pattern's order ("tablecloth
+     * (top), denim (front border, right border)"); null when the cloth is one fabric.
+     */
+    public String cutFrom() {
+        if (panelFabrics == null) return null;
+        java.util.Map<String, java.util.List<String>> panelsOf = new java.util.LinkedHashMap<>();
+        java.util.List<xpbdcloth.pattern.Panel> panels = preset.cloth.garment.pattern.pattern.panels();
+        for (int i = 0; i < panelFabrics.length; i++) panelsOf.computeIfAbsent(panelFabrics[i].name, k -> new java.util.ArrayList<>()).add(panels.get(i).name);
+        if (panelsOf.size() < 2) return null;
+        java.util.StringJoiner out = new java.util.StringJoiner(", ");
+        panelsOf.forEach((fabricName, names) -> out.add(fabricName + " (" + String.join(", ", names) + ")"));
+        return out.toString();
     }
 
     /** The gas (or held volume) inside the cloth, or null. */

@@ -90,8 +90,9 @@ final class Hud {
                 fmt("solver %s%s   %s%s", s.solverType().label(), sim.solverInUse() == null || sim.solverInUse() == s.solverType() ? ""
                                 : " (solved by " + sim.solverInUse().label() + ": it has no gas term)", balance(sim),
                         sim.profile().lastPcgIterations() > 0 ? fmt("   CG iterations %d", sim.profile().lastPcgIterations()) : ""),
-                km == null ? fmt("fabric %s%s%s   (F: next fabric)", fabric == null ? "(none)" : fabric.name, fabric == null || fabric.description.isEmpty() ? "" : " — " + fabric.description,
-                        tethered ? ", tethered" : "") : fmt("family %s", famName),
+                km == null ? (running.get(0).cutFrom() != null ? fmt("fabrics %s   (F: all one fabric)", running.get(0).cutFrom())
+                        : fmt("fabric %s%s%s   (F: next fabric)", fabric == null ? "(none)" : fabric.name, fabric == null || fabric.description.isEmpty() ? "" : " — " + fabric.description,
+                        tethered ? ", tethered" : "")) : fmt("family %s", famName),
                 km == null ? (fabric == null ? "" : fmt("  membrane warp %.0f N/m  weft %.0f N/m  ν12 %.2f  shear %.0f N/m", fabric.membrane.warpModulus,
                         fabric.membrane.weftModulus, fabric.membrane.poisson, fabric.membrane.shearModulus))
                         : fmt("  PBD  k %.2f  →  k' %.4f %s", km.stiffness, kPrime(s, km.stiffness), s.mullerCorrection() ? "(Müller, n=" + s.iterations() + ")" : "(raw k)"),
