@@ -426,15 +426,23 @@ public final class Fuzz implements Callable<Integer> {
         System.exit(new CommandLine(new Fuzz()).execute(args));
     }
 
+    private CommandLine.ParameterException bad(String message) { return new CommandLine.ParameterException(spec.commandLine(), message); }
+
     /** One preset case (see {@link PresetFuzz}): null if it passed, else why not. */
     public static String runPresetCase(long seed) { return PresetFuzz.runCase(seed); }
 
+    @CommandLine.Spec
+    CommandLine.Model.CommandSpec spec;
+
     @Override public Integer call() {
-        if (cases < 1 || cases > 10_000_000) throw new IllegalArgumentException("cases must be in [1, 10000000], was " + cases);
-        if (seed > Long.MAX_VALUE - cases) throw new IllegalArgumentException("seed must be <= " + (Long.MAX_VALUE - cases) + " so that seed + cases does not overflow, was " + seed);
+        // Every option is checked before any case runs: a bad --presets must not wait for the engine cases.
+        if (cases < 1 || cases > 10_000_000) throw bad("--cases must be in [1, 10000000], was " + cases);
+        if (presets < 0 || presets > 10_000_000) throw bad("--presets must be in [0, 10000000], was " + presets);
+        if (seed > Long.MAX_VALUE - Math.max(cases, presets))
+            throw bad("--seed must be <= " + (Long.MAX_VALUE - Math.max(cases, presets)) + " so that seed + cases does not overflow, was " + seed);
         List<SolverType> solvers = new ArrayList<>();
         for (SolverType t : SolverType.values()) if (solver.equals("all") || solver.equals(t.label())) solvers.add(t);
-        if (solvers.isEmpty()) throw new IllegalArgumentException("solver must be all, gauss-seidel, jacobi-pcg, multigrid-pcg or vertex-block-descent, was " + solver);
+        if (solvers.isEmpty()) throw bad("--solver must be all, gauss-seidel, jacobi-pcg, multigrid-pcg or vertex-block-descent, was " + solver);
         int failed = 0;
         long ran = 0;
         for (SolverType t : solvers) {
@@ -448,7 +456,6 @@ public final class Fuzz implements Callable<Integer> {
             System.out.printf(Locale.ROOT, "fuzz %s: %d cases from seed %d, %d failed, %.1f s%n", t.label(), cases, seed, failedHere, (System.nanoTime() - t0) / 1e9);
             failed += failedHere;
         }
-        if (presets < 0 || presets > 10_000_000) throw new IllegalArgumentException("presets must be in [0, 10000000], was " + presets);
         long t0 = System.nanoTime();
         int failedPresets = 0;
         for (long k = 0; k < presets; k++) {

@@ -19,8 +19,8 @@ import xpbdcloth.scene.Scene;
  *
  * <p>Every field the loader accepts is drawn (a test holds the fuzzer to the loader's own list of fields):
  * grids and the shipped meshes (placed, welded, pinned by index, group or box; the closed pillow and balloon
- * filled by a pressure block: a gas by its gauge or its amount, in air or a vacuum, or a held volume; the skirt
- * pattern sewn as a garment at a coarse edge, its sewing drawn), spring
+ * filled by a pressure block: a gas by its gauge or its amount, in air or a vacuum, or a held volume; the skirt's
+ * or the two-fabric tablecloth's pattern sewn as a garment at a coarse edge, its sewing drawn), spring
  * families or a fabric (its moduli or a catalogue name, warp, tethers, plasticity, a catalogue fabric's
  * stiffening), every solver, spheres and colliders of every kind, pin motions (moves and turns), wind,
  * aerodynamics and self-collision.
@@ -179,11 +179,14 @@ final class PresetFuzz {
             int closed = mesh && closedDraw.nextInt(3) == 0 ? (fabric ? 0 : closedDraw.nextInt(CLOSED.length)) : -1;
             int facts = closed >= 0 ? MESHES.length + closed : meshIndex;
             Object meshFile = closed >= 0 ? CLOSED[closed][0] : MESHES[meshIndex][0], meshGroup = closed >= 0 ? CLOSED[closed][1] : MESHES[meshIndex][1];
-            // A garment (the skirt pattern, coarse: 5 to 20 cm edges) in one open-mesh case of four, from a stream of its own.
+            // A garment (the skirt's pattern, one fabric, or the bordered tablecloth's, two; coarse: 5 to 20 cm edges) in one
+            // open-mesh case of four, from a stream of its own.
             Random garmentDraw = new Random(Double.doubleToLongBits(width) ^ rows ^ 0x5eed);
             boolean garment = mesh && closed < 0 && garmentDraw.nextInt(4) == 0;
             double edge = 0.05 + 0.15 * garmentDraw.nextDouble();
-            long particles = garment ? xpbdcloth.scene.PatternLoader.byNameOrPath("skirt").mesh(edge).vertexCount()
+            String pattern = garmentDraw.nextBoolean() ? "skirt" : "tablecloth";
+            xpbdcloth.mesh.ClothMesh garmentMesh = garment ? xpbdcloth.scene.PatternLoader.byNameOrPath(pattern).mesh(edge).toClothMesh() : null;
+            long particles = garment ? garmentMesh.vertexCount()
                     : mesh ? (long) meshFacts()[2 * facts] : (long) columns * rows;
             double budget = global ? WORK_BUDGET / 100 : WORK_BUDGET;
             while (particles * (double) iterations * substeps > budget && iterations * substeps > 1) {
@@ -195,7 +198,7 @@ final class PresetFuzz {
             String massField = catalogue ? "" : byDensity ? ", \"arealDensity\": " + num(density) : ", \"totalMass\": " + num(mass);
             List<String> corners = new ArrayList<>();
             if (garment) {
-                json.append("\"pattern\": \"skirt\", \"edge\": ").append(num(edge)).append(", \"sewing\": { \"time\": ").append(num(draw(Limits.SEWING_TIME, false)))
+                json.append("\"pattern\": \"").append(pattern).append("\", \"edge\": ").append(num(edge)).append(", \"sewing\": { \"time\": ").append(num(draw(Limits.SEWING_TIME, false)))
                     .append(", \"compliance\": ").append(num(draw(Limits.COMPLIANCE, true))).append(", \"seamBending\": ").append(num(draw(Limits.SEAM_BENDING, true)))
                     .append(" }").append(fabric && !catalogue ? massField : "").append(" }");
             } else if (mesh) {
@@ -274,7 +277,7 @@ final class PresetFuzz {
                 .append(", \"damping\": ").append(num(draw(Limits.DAMPING, false)))
                 .append(", \"type\": \"").append(global ? (r.nextBoolean() ? "jacobi-pcg" : "multigrid-pcg") : descent ? "vertex-block-descent" : "gauss-seidel").append("\" }");
             // A collider's margin is half the cloth's thickness, which may not exceed the cloth's spacing.
-            double halfEdge = mesh ? 0.5 * meshScale * meshFacts()[2 * facts + 1]
+            double halfEdge = garment ? 0.5 * garmentMesh.shortestEdge() : mesh ? 0.5 * meshScale * meshFacts()[2 * facts + 1]
                     : 0.5 * Math.min(columns > 1 ? width / (columns - 1) : Double.POSITIVE_INFINITY, rows > 1 ? height / (rows - 1) : Double.POSITIVE_INFINITY);
             int spheres = r.nextInt(3);
             if (spheres > 0) {
