@@ -43,7 +43,8 @@ import java.util.Arrays;
  * features can move, and the cubic's Bernstein coefficients, before any root is sought. Edge pairs are
  * listed once (the lower-numbered edge holds them). On the solver's team each thread lists and sweeps its
  * share of vertices and edges into cuts of its own, and the smallest is taken: the same bits on any thread
- * count. Nothing is allocated in a substep except when a list is longer than ever before.
+ * count. Nothing is allocated in a substep except when a list is longer than ever before; a list is never
+ * longer than {@link #MOST_CANDIDATES} per feature (past it the whole substep is put back where it began).
  * Where it fails: a root at τ = 0 (a vertex exactly in a face's plane and inside it at the substep's start)
  * is taken as a touch, not a crossing; pinned particles pushed through the cloth by their script cannot be
  * stopped (counted in {@link #unresolved()}); a cloth that is already crossed stays so (it keeps a clean
@@ -54,6 +55,12 @@ public final class CrossingGuard implements Team.Job {
     static final double BACKOFF = 0.9;
     /** Passes that cut motion back before an event's particles are put back where the substep began. */
     static final int CUT_PASSES = 4;
+    /**
+     * The most candidates the lists hold per vertex (faces) and per edge (edges), on average: the sewn skirt
+     * and tablecloth list at most 5; a cloth crossing most of itself in one substep would list them all, and
+     * is put back instead.
+     */
+    static final int MOST_CANDIDATES = 512;
     /** At most this many passes; only pinned particles moved by script through the cloth can use them all. */
     static final int MAX_PASSES = 12;
     /** Barycentric and segment-parameter slack: an event on a shared edge or vertex is not missed by round-off. */
@@ -102,7 +109,7 @@ public final class CrossingGuard implements Team.Job {
      */
     private final double[] sphere, edgeMove, triangleMove;
 
-    private long events, unresolved, passes;
+    private long events, unresolved, passes, overloads;
     /** Each particle's representative: features with one in common are neighbours, never an event. */
     private final int[] same;
     /**
@@ -179,6 +186,14 @@ public final class CrossingGuard implements Team.Job {
     /** Passes since it was made (one a substep when nothing touches). */
     public long passes() { return passes; }
 
+    /** Substeps put back whole because their candidates would have passed {@link #MOST_CANDIDATES} per feature. */
+    public long overloads() { return overloads; }
+
+    private boolean overflowed() {
+        for (Share sh : shares) if (sh.overflowed) return true;
+        return false;
+    }
+
     /**
      * Keeps where the substep begins (the prediction's x_prev, before any contact moves x_prev to undo a
      * depth the particle started at): the clean state the motion is measured from.
@@ -209,9 +224,19 @@ public final class CrossingGuard implements Team.Job {
             passes++;
             sweptBoxes(start, x);
             passPutsBack = pass >= CUT_PASSES;
+            final boolean listing = passLists;
             if (threads == 1) sweep(shares[0], 0, 1);
             else team.run(this);
             passLists = false;
+            if (listing && overflowed()) {
+                // The cloth moves so far across itself in this substep that nearly every feature may meet nearly
+                // every other: listing them all would take memory without bound (a fuzzed cloth under 100 m/s² and a
+                // 100 m/s wind needed 6 GB). The start was clean, so the whole substep's motion is put back.
+                for (int i = 0; i < n; i++) if (w[i] != 0) System.arraycopy(start, 3 * i, x, 3 * i, 3);
+                overloads++;
+                listed = false;
+                return;
+            }
             found = 0;
             for (Share sh : shares) found += sh.found;
             if (found == 0) return;
@@ -322,7 +347,10 @@ public final class CrossingGuard implements Team.Job {
      */
     private void list(Share sh, int id, int count) {
         sh.faceCount = 0;
-        for (int i = (int) ((long) particles * id / count), last = (int) ((long) particles * (id + 1) / count); i < last; i++) {
+        sh.overflowed = false;
+        final int firstParticle = (int) ((long) particles * id / count), lastParticle = (int) ((long) particles * (id + 1) / count);
+        sh.faceCap = (int) Math.min(Integer.MAX_VALUE / 2, (long) MOST_CANDIDATES * (lastParticle - firstParticle));
+        for (int i = firstParticle, last = lastParticle; i < last && !sh.overflowed; i++) {
             final int m = sh.reachQuery(i, i);
             final int[] candidates = sh.query.found();
             for (int c = 0; c < m; c++) {
@@ -335,7 +363,9 @@ public final class CrossingGuard implements Team.Job {
         sh.edgePairCount = 0;
         final int edgeCount = edges.length / 2;
         final int[] edgeSeen = sh.edgeSeen;
-        for (int e = (int) ((long) edgeCount * id / count), last = (int) ((long) edgeCount * (id + 1) / count); e < last; e++) {
+        final int firstEdge = (int) ((long) edgeCount * id / count), lastEdge = (int) ((long) edgeCount * (id + 1) / count);
+        sh.edgePairCap = (int) Math.min(Integer.MAX_VALUE / 2, (long) MOST_CANDIDATES * (lastEdge - firstEdge));
+        for (int e = firstEdge, last = lastEdge; e < last && !sh.overflowed; e++) {
             final int p = edges[2 * e], q = edges[2 * e + 1], sp = same[p], sq = same[q];
             if (++sh.edgeStamp == Integer.MAX_VALUE) { Arrays.fill(edgeSeen, 0); sh.edgeStamp = 1; }
             final int stamp = sh.edgeStamp;
@@ -542,16 +572,21 @@ public final class CrossingGuard implements Team.Job {
         /** The candidates: (vertex, triangle) and (edge, edge) pairs, two numbers each. */
         int[] faces = new int[64], edgePairs = new int[64];
         int faceCount, edgePairCount;
+        /** The most candidates this share's lists may hold ({@link #MOST_CANDIDATES} per feature), and whether its last listing met that. */
+        int faceCap, edgePairCap;
+        boolean overflowed;
         /** The box the overlap tests compare with. */
         double lx, ly, lz, hx, hy, hz;
 
         void addFace(int i, int t) {
+            if (faceCount == faceCap) { overflowed = true; return; }
             if (2 * faceCount == faces.length) faces = Arrays.copyOf(faces, 2 * faces.length);
             faces[2 * faceCount] = i;
             faces[2 * faceCount++ + 1] = t;
         }
 
         void addEdgePair(int e, int f) {
+            if (edgePairCount == edgePairCap) { overflowed = true; return; }
             if (2 * edgePairCount == edgePairs.length) edgePairs = Arrays.copyOf(edgePairs, 2 * edgePairs.length);
             edgePairs[2 * edgePairCount] = e;
             edgePairs[2 * edgePairCount++ + 1] = f;

@@ -90,6 +90,28 @@ class CrossingGuardTest {
 
     static final int N = 24;
 
+    /**
+     * A cloth whose every particle is thrown 100 m in its own direction within one substep: every feature may
+     * meet every other, and listing them all would take memory without bound. The guard lists at most
+     * {@link CrossingGuard#MOST_CANDIDATES} per feature and, past that, puts the whole substep back: every
+     * particle ends exactly where it began, at rest, and the cloth is uncrossed.
+     */
+    @Test
+    void aClothThrownAcrossItselfWholesaleIsPutBackWhole() {
+        Cloth c = new ClothBuilder().resolution(40, 40).size(1, 1).origin(0, 1, 0).arealDensity(0.2).family(ConstraintFamily.STRUCTURAL, 1, 0).build();
+        Particles p = c.particles();
+        Simulation sim = c.simulation(new SolverSettings().withIterations(1).withSubsteps(1).withGravity(0, 0, 0));
+        sim.selfCollision(new SelfCollision(p.positions().clone(), c.triangles(), 1e-3, 0, 0));
+        double[] before = p.positions().clone();
+        java.util.Random r = new java.util.Random(5);
+        for (int i = 0; i < p.count(); i++) p.setVelocity(i, 5000 * r.nextGaussian(), 5000 * r.nextGaussian(), 5000 * r.nextGaussian());
+        sim.step(0.02);
+        assertEquals(1, sim.selfCollision().guard().overloads(), "the substep put back whole");
+        assertArrayEquals(before, p.positions(), 0, "every particle where it began");
+        for (int i = 0; i < p.count(); i++) assertEquals(0, Math.abs(p.vx(i)) + Math.abs(p.vy(i)) + Math.abs(p.vz(i)), 0, "particle " + i + " at rest");
+        assertEquals(0, TriangleIntersections.count(p.positions(), c.triangles()));
+    }
+
     static Cloth collapsingCloth() {
         return new ClothBuilder().resolution(N, N).size(1, 1).origin(0, 1.02, 0).arealDensity(0.2)
                 .family(ConstraintFamily.STRUCTURAL, 1, 1e-6).family(ConstraintFamily.SHEAR, 0.5, 1e-3).family(ConstraintFamily.BEND, 0.1, 1e-2).build();
