@@ -2,10 +2,6 @@ package xpbdcloth.fabric;
 
 import java.util.List;
 import xpbdcloth.engine.ConstraintBlock;
-import xpbdcloth.engine.ConstraintFamily;
-import xpbdcloth.engine.DihedralBlock;
-import xpbdcloth.engine.MembraneBlock;
-import xpbdcloth.engine.QuadraticBendBlock;
 import xpbdcloth.engine.Particles;
 
 /**
@@ -13,6 +9,9 @@ import xpbdcloth.engine.Particles;
  * every dihedral bend the new bending stiffness, and every particle's mass scales so the cloth has the
  * new areal density. Rest shapes, warp directions, tethers, positions and velocities stay, so the cloth
  * carries on from where it is as the new material (XPBD's λ restart each step, so nothing stale remains).
+ * The masses scale rather than being weighed again, so a distribution the cloth was given (a total mass,
+ * masses per vertex) stays; a garment, weighed panel by panel from its cut areas, is made one fabric by
+ * {@link PanelFabrics} instead.
  */
 public final class FabricSwap {
     private FabricSwap() {}
@@ -23,22 +22,7 @@ public final class FabricSwap {
      */
     public static double apply(List<ConstraintBlock> blocks, Particles p, Fabric fabric) {
         if (fabric == null) throw new IllegalArgumentException("fabric must not be null, was null");
-        double area = 0;
-        for (ConstraintBlock b : blocks) {
-            if (b instanceof MembraneBlock) {
-                MembraneBlock m = (MembraneBlock) b;
-                for (int t = 0; t < m.triangleCount(); t++) {
-                    m.setMaterial(t, fabric.membrane);
-                    area += m.area(t);
-                }
-            } else if (b instanceof DihedralBlock && b.family() != ConstraintFamily.SEAM) {  // a seam's hinges: Sewing.useBendingStiffness
-                DihedralBlock d = (DihedralBlock) b;
-                for (int i = 0; i < d.count(); i++) d.setBendingStiffness(i, fabric.bendingStiffness);
-            } else if (b instanceof QuadraticBendBlock) {
-                QuadraticBendBlock q = (QuadraticBendBlock) b;
-                for (int u = 0; u < q.hingeCount(); u++) q.setBendingStiffness(u, fabric.bendingStiffness);
-            }
-        }
+        double area = PanelFabrics.materials(blocks, t -> fabric, i -> fabric);
         if (area == 0) return Double.NaN;
         double mass = 0;
         for (int i = 0; i < p.count(); i++) mass += p.mass(i);

@@ -1,6 +1,7 @@
 package xpbdcloth.fabric;
 
 import java.util.List;
+import java.util.function.IntFunction;
 import xpbdcloth.engine.ConstraintBlock;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.DihedralBlock;
@@ -35,21 +36,14 @@ public final class PanelFabrics {
             throw new IllegalArgumentException("panelOfParticle must have one entry per particle (" + p.count() + "), was " + panelOfParticle.length);
         MembraneBlock membrane = null;
         for (ConstraintBlock b : blocks) {
-            if (b instanceof MembraneBlock) {
-                if (membrane != null) throw new IllegalArgumentException("blocks must hold one membrane block, had two");
-                membrane = (MembraneBlock) b;
-                if (membrane.triangleCount() != panelOfTriangle.length)
-                    throw new IllegalArgumentException("panelOfTriangle must have one entry per membrane triangle (" + membrane.triangleCount() + "), was " + panelOfTriangle.length);
-                for (int t = 0; t < membrane.triangleCount(); t++) membrane.setMaterial(t, fabrics[panelOfTriangle[t]].membrane);
-            } else if (b instanceof DihedralBlock && b.family() != ConstraintFamily.SEAM) {
-                DihedralBlock d = (DihedralBlock) b;
-                for (int i = 0; i < d.count(); i++) d.setBendingStiffness(i, fabrics[panelOfParticle[d.particle(i, 0)]].bendingStiffness);
-            } else if (b instanceof QuadraticBendBlock) {
-                QuadraticBendBlock q = (QuadraticBendBlock) b;
-                for (int u = 0; u < q.hingeCount(); u++) q.setBendingStiffness(u, fabrics[panelOfParticle[q.particle(3 * u, 0)]].bendingStiffness);
-            }
+            if (!(b instanceof MembraneBlock)) continue;
+            if (membrane != null) throw new IllegalArgumentException("blocks must hold one membrane block, had two");
+            membrane = (MembraneBlock) b;
         }
         if (membrane == null) throw new IllegalArgumentException("blocks must hold the cloth's membrane block, had none");
+        if (membrane.triangleCount() != panelOfTriangle.length)
+            throw new IllegalArgumentException("panelOfTriangle must have one entry per membrane triangle (" + membrane.triangleCount() + "), was " + panelOfTriangle.length);
+        materials(blocks, t -> fabrics[panelOfTriangle[t]], i -> fabrics[panelOfParticle[i]]);
         for (Fabric f : fabrics) if (Double.isNaN(f.arealDensity)) return;
         double[] mass = new double[p.count()];
         for (int t = 0; t < membrane.triangleCount(); t++) {
@@ -57,5 +51,31 @@ public final class PanelFabrics {
             for (int c = 0; c < 3; c++) mass[membrane.particle(3 * t, c)] += share;
         }
         for (int i = 0; i < mass.length; i++) if (mass[i] > 0) p.setMass(i, mass[i]);
+    }
+
+    /**
+     * The fabric's materials on a cloth's blocks: each membrane triangle t takes the moduli of
+     * {@code ofTriangle(t)}, each bending hinge (not a seam's: {@link xpbdcloth.engine.Sewing#useBendingStiffness})
+     * the bending stiffness of {@code ofParticle} at its first particle. Returns the membrane's rest area (m²,
+     * 0 without one). {@link FabricSwap} is this with one fabric everywhere.
+     */
+    static double materials(List<ConstraintBlock> blocks, IntFunction<Fabric> ofTriangle, IntFunction<Fabric> ofParticle) {
+        double area = 0;
+        for (ConstraintBlock b : blocks) {
+            if (b instanceof MembraneBlock) {
+                MembraneBlock m = (MembraneBlock) b;
+                for (int t = 0; t < m.triangleCount(); t++) {
+                    m.setMaterial(t, ofTriangle.apply(t).membrane);
+                    area += m.area(t);
+                }
+            } else if (b instanceof DihedralBlock && b.family() != ConstraintFamily.SEAM) {
+                DihedralBlock d = (DihedralBlock) b;
+                for (int i = 0; i < d.count(); i++) d.setBendingStiffness(i, ofParticle.apply(d.particle(i, 0)).bendingStiffness);
+            } else if (b instanceof QuadraticBendBlock) {
+                QuadraticBendBlock q = (QuadraticBendBlock) b;
+                for (int u = 0; u < q.hingeCount(); u++) q.setBendingStiffness(u, ofParticle.apply(q.particle(3 * u, 0)).bendingStiffness);
+            }
+        }
+        return area;
     }
 }

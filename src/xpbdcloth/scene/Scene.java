@@ -50,8 +50,9 @@ public final class Scene {
     private double presetAmount = Double.NaN;
     /** Whether the fabric bends by dihedral hinges (a bent rest, or yielding) rather than plate patches. */
     private boolean bendsByHinges;
-    /** A garment's panels' fabrics now (the preset's, until {@link #useFabric} makes them all one), or null. */
+    /** A garment's panels' fabrics now (the preset's, until {@link #useFabric} makes them all one), or null; and {@link #cutFrom}'s text for them. */
     private Fabric[] panelFabrics;
+    private String cutFrom;
     /** A garment's sewing, or null; and its particles' representatives once sewn ({@link xpbdcloth.pattern.PatternMesh#welded}). */
     private Sewing sewing;
     private int[] welded;
@@ -73,6 +74,7 @@ public final class Scene {
             if (garment != null) {
                 panelFabrics = garment.panelFabrics();
                 PanelFabrics.apply(simulation.blocks(), cloth.particles(), garment.pattern.panelOfVertex(), garment.pattern.panelOfTriangle(), panelFabrics);
+                cutFrom = describeCut();
             }
             if (placed != null) for (int i = 0; i < cloth.particles().count(); i++) cloth.particles().setPosition(i, placed[3 * i], placed[3 * i + 1], placed[3 * i + 2]);
             if (f.plasticity != null) {
@@ -243,6 +245,7 @@ public final class Scene {
             java.util.Arrays.fill(panelFabrics, next);
             Preset.GarmentSpec garment = preset.cloth.garment;
             PanelFabrics.apply(simulation.blocks(), cloth.particles(), garment.pattern.panelOfVertex(), garment.pattern.panelOfTriangle(), panelFabrics);
+            cutFrom = describeCut();
         } else FabricSwap.apply(simulation.blocks(), cloth.particles(), next);
         if (stiffening != null) stiffening.use(next.stretchingCurve);
         if (sewing != null) sewing.useBendingStiffness(next.bendingStiffness);
@@ -253,7 +256,9 @@ public final class Scene {
      * Which panels of a garment of several fabrics are cut from which, in the pattern's order ("tablecloth
      * (top), denim (front border, right border)"); null when the cloth is one fabric.
      */
-    public String cutFrom() {
+    public String cutFrom() { return cutFrom; }
+
+    private String describeCut() {
         if (panelFabrics == null) return null;
         java.util.Map<String, java.util.List<String>> panelsOf = new java.util.LinkedHashMap<>();
         java.util.List<xpbdcloth.pattern.Panel> panels = preset.cloth.garment.pattern.pattern.panels();
