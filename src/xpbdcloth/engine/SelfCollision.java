@@ -29,7 +29,8 @@ import java.util.Arrays;
  * and the hash is not rebuilt. A cloth at rest or sliding slowly rebuilds rarely; one falling fast, every
  * substep. Cells are 2R wide: a particle searches the cells its own reach spans (each pair is found by
  * the faster of its two), so one fast particle no longer widens every cell. The arrays grow only when
- * the cloth needs more (more pairs than ever before), so steady stepping allocates nothing.
+ * the cloth needs more (more pairs than ever before), so steady stepping allocates nothing, and never
+ * past {@link #MOST_PAIRS} a particle (a cloth moving far across itself in one substep, {@link #overloads()}).
  * Where it fails: a particle passing through the middle of a triangle between three others far apart
  * (the cloth's spacing larger than t) is not caught: this is particle–particle, not point–triangle; the
  * {@link CrossingGuard}, made with the triangles, catches what passes (at a cost, docs/contacts.md).
@@ -37,6 +38,14 @@ import java.util.Arrays;
 public final class SelfCollision extends Collider implements Team.Job {
     /** Pairs closer than this many thicknesses at rest are neighbours: the cloth's own constraints keep them apart. */
     static final double NEIGHBOURHOOD = 2;
+    /**
+     * The most pairs one particle lists (each pair is listed by one of its two, so a build lists at most this
+     * many per particle). Particles kept t apart fill a ball of radius R = 1.75 t with about 90 at the
+     * densest packing; a cloth lists a handful each (the shipped scenes with self-collision, 600 steps each,
+     * have at most 15 pairs at any particle, counting both ends, on denim-fold). Only motion far beyond the
+     * thickness reaches the bound; see {@link #overloads()}.
+     */
+    static final int MOST_PAIRS = 128;
     final double thickness;
     private final double[] rest;
     private final CrossingGuard guard;
@@ -52,6 +61,8 @@ public final class SelfCollision extends Collider implements Team.Job {
     private boolean listed;
     /** Hash rebuilds since this self-collision was made (the list kept otherwise). */
     private long builds;
+    /** Builds whose reach through the substep's motion found too many pairs, see {@link #overloads()}. */
+    private long overloads;
     /** Each thread's own finds (particles split in ascending ranges, so their concatenation is the one-thread list). */
     private Finds[] finds = {new Finds()};
     private double buildBase, buildCell;
@@ -63,6 +74,8 @@ public final class SelfCollision extends Collider implements Team.Job {
         int[] i = new int[16], j = new int[16];
         int count;
         int[] visitedBy = new int[0];
+        /** Some particle of this share found {@link #MOST_PAIRS} pairs and searched no further. */
+        boolean full;
 
         void add(int a, int b) {
             if (count == i.length) { i = Arrays.copyOf(i, 2 * count); j = Arrays.copyOf(j, 2 * count); }
@@ -138,6 +151,19 @@ public final class SelfCollision extends Collider implements Team.Job {
     public long builds() { return builds; }
 
     /**
+     * Builds where some particle, reaching through its motion in the substep, found more than
+     * {@link #MOST_PAIRS} pairs: a cloth that moves many times its thickness in one substep, so nearly every
+     * particle may meet nearly every other (the preset fuzzer found one, seed 9100088: a 105 × 158 cloth of
+     * 0.28 mm thickness falling 11 cm a substep would have listed all 1.4e8 pairs and ran out of memory).
+     * Such a build lists again the pairs within reach where the particles are now, without their motion:
+     * pairs already closer than t are still pushed apart, but two particles that meet only during the substep
+     * are missed there (as a particle passing between three others is). Where even that exceeds the bound
+     * (a cloth crushed into a ball a few thicknesses wide), each particle keeps the first pairs it found, and
+     * the list is made again the next substep.
+     */
+    public long overloads() { return overloads; }
+
+    /**
      * The skin s: pairs up to t + slack + s apart are listed, and the list holds while no particle drifts s/2.
      * Half the thickness keeps that reach, 1.75 t, inside the rest neighbourhood (2 t), so a flat layer lists
      * none of its own particles: with s = t, a cloth whose thickness is 0.9 of its spacing listed every
@@ -183,17 +209,36 @@ public final class SelfCollision extends Collider implements Team.Job {
             finds = new Finds[threads];
             for (int t = 0; t < threads; t++) finds[t] = new Finds();
         }
+        search(p, team);
+        if (full()) {
+            overloads++;
+            // Again without the substep's motion: the pairs near each other now (see overloads()).
+            Arrays.fill(reachOf, 0, n, 0.0);
+            buildHash(p.x, n, buildCell);
+            search(p, team);
+            if (full()) listed = false;
+        }
+        pairs = 0;
+        for (Finds f : finds)
+            for (int k = 0; k < f.count; k++) addPair(f.i[k], f.j[k]);
+    }
+
+    /** Every share's finds, from empty. */
+    private void search(Particles p, Team team) {
         for (Finds f : finds) {
             f.count = 0;
+            f.full = false;
             if (f.visitedBy.length != cellStart.length - 1) f.visitedBy = new int[cellStart.length - 1];
             else Arrays.fill(f.visitedBy, 0);
         }
         buildParticles = p;
         if (team == null) find(p, 0, 1);
         else team.run(this);
-        pairs = 0;
-        for (Finds f : finds)
-            for (int k = 0; k < f.count; k++) addPair(f.i[k], f.j[k]);
+    }
+
+    private boolean full() {
+        for (Finds f : finds) if (f.full) return true;
+        return false;
     }
 
     /** A build's search on the team: each thread its share of the particles. */
@@ -212,7 +257,7 @@ public final class SelfCollision extends Collider implements Team.Job {
         final double base = buildBase, cell = buildCell;
         final double neighbours = NEIGHBOURHOOD * NEIGHBOURHOOD * thickness * thickness;
         for (int i = (int) ((long) n * id / shares), last = (int) ((long) n * (id + 1) / shares); i < last; i++) {
-            final int k = 3 * i;
+            final int k = 3 * i, first = out.count;
             final double xi = x[k], yi = x[k + 1], zi = x[k + 2], mi = reachOf[i];
             // A pair is found by the faster of the two (by index when equally fast): i searches as far as a
             // partner as fast as itself could need, base + 2 mᵢ, over the cells that span on each axis (two or
@@ -225,10 +270,11 @@ public final class SelfCollision extends Collider implements Team.Job {
                 // A particle moving many cells in a substep (a fast one on a fine cloth) would search more
                 // cells than there are particles: look at every particle instead (the fuzzer found a 4 × 2
                 // cloth taking minutes a step, searching 1e11 cells).
-                scan(out, i, 0, n, mi, w, neighbours);
+                scan(out, i, first, 0, n, mi, w, neighbours);
                 continue;
             }
             // Long counters: a cell index saturated at Integer.MAX_VALUE (a tiny thickness far out) still ends the loop.
+            search:
             for (long cx = x0; cx <= x1; cx++)
                 for (long cy = y0; cy <= y1; cy++)
                     for (long cz = z0; cz <= z1; cz++) {
@@ -236,16 +282,17 @@ public final class SelfCollision extends Collider implements Team.Job {
                         // Two of the cells searched can share a bucket: visit it once, or its pairs would be found twice.
                         if (visitedBy[bucket] == i + 1) continue;
                         visitedBy[bucket] = i + 1;
-                        scan(out, i, cellStart[bucket], cellStart[bucket + 1], mi, w, neighbours);
+                        if (!scan(out, i, first, cellStart[bucket], cellStart[bucket + 1], mi, w, neighbours)) break search;
                     }
         }
     }
 
     /**
      * Particle i against the hash's particles sorted[from .. to): each pair it is the one to find (the
-     * faster, or the higher index when as fast), within reach now and not neighbours at rest, into out.
+     * faster, or the higher index when as fast), within reach now and not neighbours at rest, into out;
+     * false (and out full) once i has found {@link #MOST_PAIRS} since {@code first}.
      */
-    private void scan(Finds out, int i, int from, int to, double mi, double[] w, double neighbours) {
+    private boolean scan(Finds out, int i, int first, int from, int to, double mi, double[] w, double neighbours) {
         final double[] sx = sortedX, x = buildParticles.x;
         final int k = 3 * i;
         final double xi = x[k], yi = x[k + 1], zi = x[k + 2], base = buildBase;
@@ -260,8 +307,10 @@ public final class SelfCollision extends Collider implements Team.Job {
             final int m = 3 * j;
             final double rx = rest[k] - rest[m], ry = rest[k + 1] - rest[m + 1], rz = rest[k + 2] - rest[m + 2];
             if (rx * rx + ry * ry + rz * rz < neighbours) continue; // neighbours at rest
+            if (out.count - first == MOST_PAIRS) { out.full = true; return false; }
             out.add(Math.min(i, j), Math.max(i, j));
         }
+        return true;
     }
 
     private static double motion(double[] x, double[] prev, int k) {

@@ -91,6 +91,76 @@ class SelfCollisionTest {
         }
     }
 
+    /**
+     * A 60² cloth of 0.3 m falling 0.5 m in its one substep: each particle's reach through its motion spans
+     * the whole cloth, where listing every pair (6.5 million) is what ran a 16,590-particle cloth out of
+     * memory. The build lists at most {@link SelfCollision#MOST_PAIRS} a particle, the same with two threads
+     * as with one, and since no pair is closer than t the cloth falls exactly as free fall says,
+     * y = y₀ − g h² after one symplectic Euler substep.
+     */
+    @Test
+    void aClothFallingFarAcrossItselfInOneSubstepListsAtMostTheBound() {
+        double[][] ends = new double[2][];
+        for (int threads = 1; threads <= 2; threads++) {
+            Cloth c = new ClothBuilder().resolution(60, 60).size(0.3, 0.3).plane(ClothBuilder.Plane.HORIZONTAL).origin(0, 1, 0).arealDensity(0.2)
+                    .family(ConstraintFamily.STRUCTURAL, 1, 0).build();
+            double g = 50, h = 0.1;
+            Simulation sim = c.simulation(new SolverSettings().withGravity(0, -g, 0).withTimestep(h).withSubsteps(1).withIterations(2).withThreads(threads));
+            Particles p = c.particles();
+            double[] start = p.positions().clone();
+            SelfCollision self = new SelfCollision(start, 0.2 * 0.3 / 59, 0.3, 0.2);
+            sim.selfCollision(self);
+            sim.step();
+            assertEquals(1, self.overloads(), "builds past the bound");
+            assertTrue(self.pairCount() <= SelfCollision.MOST_PAIRS * p.count(), "pairs listed: " + self.pairCount());
+            for (int i = 0; i < p.count(); i++) {
+                assertEquals(start[3 * i + 1] - g * h * h, p.y(i), 1e-12, "particle " + i + " falls freely");
+                assertEquals(start[3 * i], p.x(i), 1e-12, "particle " + i + " x");
+            }
+            ends[threads - 1] = p.positions().clone();
+        }
+        assertArrayEquals(ends[0], ends[1], "one thread and two, bit for bit");
+    }
+
+    /**
+     * Two 40² layers of free particles 0.5 t apart (far apart at rest, so they collide), moving together at
+     * 100 m/s: a substep's motion of 1 m reaches every particle, so the build is past the bound and lists
+     * again without the motion. The pairs already too close are still in that list: every particle ends
+     * exactly t from its partner across the layers, pushed apart by equal masses, the layers' common
+     * velocity unchanged.
+     */
+    @Test
+    void aBuildPastTheBoundStillPushesApartWhatIsAlreadyTooClose() {
+        final int side = 40, layer = side * side;
+        final double spacing = 0.01, t = 0.5 * spacing, v = -100;
+        Particles p = new Particles(2 * layer);
+        double[] rest = new double[6 * layer];
+        for (int k = 0; k < 2 * layer; k++) {
+            int i = k % layer, up = k / layer;
+            p.setMass(k, 1e-3);
+            p.setPosition(k, spacing * (i % side), up * 0.5 * t, spacing * (i / side));
+            p.setVelocity(k, 0, v, 0);
+            rest[3 * k] = spacing * (i % side);
+            rest[3 * k + 1] = 10 * up;
+            rest[3 * k + 2] = spacing * (i / side);
+        }
+        Simulation sim = new Simulation(p, new SolverSettings().withGravity(0, 0, 0).withTimestep(0.01).withSubsteps(1).withIterations(2));
+        SelfCollision self = new SelfCollision(rest, t, 0.3, 0.2);
+        sim.selfCollision(self);
+        sim.step();
+        assertEquals(1, self.overloads(), "builds past the bound");
+        assertEquals(layer, self.pairCount(), "the pairs within reach now: one across the layers per particle");
+        double[] x = p.positions();
+        double sumVy = 0;
+        for (int i = 0; i < layer; i++) {
+            int a = 3 * i, b = 3 * (i + layer);
+            assertEquals(t, x[b + 1] - x[a + 1], 1e-12, "pair " + i + " apart by the thickness");
+            assertEquals(-1 - 0.25 * t, x[a + 1], 1e-12, "lower particle " + i + " moved 1 m and half the overlap");
+            sumVy += p.vy(i) + p.vy(i + layer);
+        }
+        assertEquals(2 * layer * v, sumVy, 1e-9, "momentum (equal masses: the sum of velocities)");
+    }
+
     @Test
     void steppingWithSelfCollisionAllocatesNothing() {
         Cloth c = new ClothBuilder().resolution(24, 24).size(1, 1).plane(ClothBuilder.Plane.HORIZONTAL).origin(0, 0.3, 0).arealDensity(0.2)
