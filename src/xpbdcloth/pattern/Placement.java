@@ -5,9 +5,10 @@ package xpbdcloth.pattern;
  * panel's bounding box goes to {@code position}, its pattern plane (x right, y up, face towards +z) turned
  * by {@code rotation} (degrees about x, then y, then z, as presets place meshes), optionally first rolled
  * onto a cylinder of radius {@code wrap} about a vertical axis behind its face; or the panel is wrapped
- * {@linkplain #around around} a body part: onto an elliptic cylinder about a vertical axis, its centre at an
- * angle round it, its face outwards. Either way x is measured along the surface (the wrap stretches nothing)
- * and y stays vertical.
+ * {@linkplain #around around} a body part: onto an elliptic cylinder about an axis (vertical for a torso or
+ * a leg, slanted along an arm for a sleeve), its centre at an angle round it, its face outwards. Either way
+ * x is measured along the surface (the wrap stretches nothing) and y runs along the axis (vertical unless
+ * the axis is slanted).
  */
 public final class Placement {
     public static final Placement IDENTITY = new Placement(new double[3], new double[3], 0);
@@ -18,6 +19,12 @@ public final class Placement {
     private final double[][] turn;
     /** Around a body part: the axis's point, the ellipse's half widths along x and z, and arc length by angle (null otherwise). */
     private final double[] centre, radii, arcAt;
+    /**
+     * Around a body part: the cylinder's frame, unit and right-handed, side × axis = front: the pattern's y
+     * runs along {@code axis}, the angle is measured from {@code front} (the world's +z made square to the
+     * axis) towards {@code side}. A vertical axis gives x, y and z.
+     */
+    private final double[] side, axis, front;
     private final double startAngle;
     private static final int ARC_STEPS = 4096;
 
@@ -35,13 +42,24 @@ public final class Placement {
         double[][] ry = {{Math.cos(ay), 0, Math.sin(ay)}, {0, 1, 0}, {-Math.sin(ay), 0, Math.cos(ay)}};
         double[][] rz = {{Math.cos(az), -Math.sin(az), 0}, {Math.sin(az), Math.cos(az), 0}, {0, 0, 1}};
         turn = times(rz, times(ry, rx));
-        centre = radii = arcAt = null;
+        centre = radii = arcAt = side = axis = front = null;
         startAngle = 0;
     }
 
-    private Placement(double[] centre, double[] radii, double angleDegrees, Void around) {
+    private Placement(double[] centre, double[] radii, double angleDegrees, double[] axis) {
         for (int i = 0; i < 3; i++)
             if (!Double.isFinite(centre[i])) throw new IllegalArgumentException("centre must be finite, was " + java.util.Arrays.toString(centre));
+        double length = Math.sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+        if (!(length > 0) || Double.isInfinite(length) || Double.isNaN(length))
+            throw new IllegalArgumentException("axis must be a direction (finite, not [0, 0, 0]), was " + java.util.Arrays.toString(axis));
+        this.axis = new double[] {axis[0] / length, axis[1] / length, axis[2] / length};
+        // Front: +z without its part along the axis; an axis along z has no such front, so +y is used.
+        double[] towards = Math.abs(this.axis[2]) > 0.999 ? new double[] {0, 1, 0} : new double[] {0, 0, 1};
+        double along = dot(towards, this.axis);
+        double[] f = {towards[0] - along * this.axis[0], towards[1] - along * this.axis[1], towards[2] - along * this.axis[2]};
+        double fl = Math.sqrt(dot(f, f));
+        this.front = new double[] {f[0] / fl, f[1] / fl, f[2] / fl};
+        this.side = cross(this.axis, this.front);
         if (!(radii[0] > 0 && radii[1] > 0) || Double.isInfinite(radii[0]) || Double.isInfinite(radii[1]))
             throw new IllegalArgumentException("radii must be two half widths > 0 m (x, z), was " + java.util.Arrays.toString(radii));
         if (!Double.isFinite(angleDegrees)) throw new IllegalArgumentException("angle must be finite, was " + angleDegrees);
@@ -69,8 +87,18 @@ public final class Placement {
      * axis the way the angle grows, its face outwards.
      */
     public static Placement around(double[] centre, double[] radii, double angleDegrees) {
-        if (centre.length != 3 || radii.length != 2) throw new IllegalArgumentException("centre must be [x, y, z] and radii [x, z]");
-        return new Placement(centre, radii, angleDegrees, null);
+        return around(centre, radii, angleDegrees, new double[] {0, 1, 0});
+    }
+
+    /**
+     * As {@link #around(double[], double[], double)}, about the axis through {@code centre} along
+     * {@code axis} (any length; the pattern's y runs along it): a sleeve round a slanted arm. The ellipse's
+     * half widths are along the frame's side (for a vertical axis, x) and front (+z made square to the axis;
+     * +y for an axis along z); angle 0 is the front and 90 the side, side = axis × front.
+     */
+    public static Placement around(double[] centre, double[] radii, double angleDegrees, double[] axis) {
+        if (centre.length != 3 || radii.length != 2 || axis.length != 3) throw new IllegalArgumentException("centre must be [x, y, z], radii [x, z] and axis [x, y, z]");
+        return new Placement(centre, radii, angleDegrees, axis);
     }
 
     /** Whether the panel is wrapped round a body part ({@link #around}). */
@@ -108,11 +136,14 @@ public final class Placement {
     public void place(double x, double y, double cx, double cy, double dx, double dy, double[] out) {
         if (arcAt != null) {
             double a = angleAt(arcLengthTo(startAngle) + x - cx), c = Math.cos(a), s = Math.sin(a);
-            out[0] = centre[0] + radii[0] * s;
-            out[1] = centre[1] + y - cy;
-            out[2] = centre[2] + radii[1] * c;
-            double tx = radii[0] * c, tz = -radii[1] * s, l = Math.hypot(tx, tz);
-            out[3] = dx * tx / l; out[4] = dy; out[5] = dx * tz / l;
+            // In the cylinder's frame: (radii₀ sin a, y − cy, radii₁ cos a), its tangent round the ellipse (tx, ·, tz)
+            // (y and cy added apart, in this order, as the vertical-only placement did: the same bits for it)
+            double lx = radii[0] * s, lz = radii[1] * c;
+            double tx = radii[0] * c, tz = -radii[1] * s, l = Math.hypot(tx, tz), gx = dx * tx / l, gz = dx * tz / l;
+            for (int i = 0; i < 3; i++) {
+                out[i] = centre[i] + side[i] * lx + axis[i] * y - axis[i] * cy + front[i] * lz;
+                out[3 + i] = side[i] * gx + axis[i] * dy + front[i] * gz;
+            }
             return;
         }
         double u = x - cx, v = y - cy, lx, ly = v, lz, tx, ty = dy, tz;
@@ -127,6 +158,12 @@ public final class Placement {
             out[i] = position[i] + turn[i][0] * lx + turn[i][1] * ly + turn[i][2] * lz;
             out[3 + i] = turn[i][0] * tx + turn[i][1] * ty + turn[i][2] * tz;
         }
+    }
+
+    private static double dot(double[] a, double[] b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+    private static double[] cross(double[] a, double[] b) {
+        return new double[] {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
     }
 
     private static double[][] times(double[][] a, double[][] b) {

@@ -167,6 +167,14 @@ abstract class JsonFields {
         return n.json.asInt();
     }
 
+    /** A direction: components in [-1, 1], not (almost) zero. */
+    double[] direction(Node n) {
+        double[] d = vector(n, Limits.NORMAL);
+        double len = Math.sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        if (len < 1e-3) throw fail(n.path, "must not be (almost) zero, had length " + len);
+        return d;
+    }
+
     double[] vector(Node n, Limits.Range range) {
         if (!n.json.isArray() || n.json.size() != 3) throw fail(n.path, "must be [x, y, z], was " + describe(n.json));
         double[] v = new double[3];

@@ -135,12 +135,12 @@ public final class PatternLoader {
             if (around != null) {
                 for (Node other : new Node[] {p, r, w})
                     if (other != null) throw fail(other.path, "panel \"" + name + "\": a panel is placed by position, rotation and wrap, or around a body part, not both");
-                object(around, Set.of("centre", "radii", "angle"));
-                Node radii = required(around, "radii"), angle = optional(around, "angle");
+                object(around, Set.of("centre", "radii", "angle", "axis"));
+                Node radii = required(around, "radii"), angle = optional(around, "angle"), axis = optional(around, "axis");
                 if (!radii.json.isArray() || radii.json.size() != 2) throw fail(radii.path, "must be [x, z], the half widths of the body part, was " + describe(radii.json));
                 at = Placement.around(vector(required(around, "centre"), Limits.POSITION),
                         new double[] {number(new Node(radii.json.get(0), radii.path + "[0]"), Limits.SIZE), number(new Node(radii.json.get(1), radii.path + "[1]"), Limits.SIZE)},
-                        angle == null ? 0 : number(angle, Limits.ROTATION));
+                        angle == null ? 0 : number(angle, Limits.ROTATION), axis == null ? new double[] {0, 1, 0} : direction(axis));
             } else {
                 at = new Placement(p == null ? new double[3] : vector(p, Limits.POSITION),
                         r == null ? new double[3] : vector(r, Limits.ROTATION), w == null ? 0 : number(w, Limits.WRAP_RADIUS));

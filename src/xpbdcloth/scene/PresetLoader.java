@@ -36,7 +36,7 @@ import xpbdcloth.mesh.UsdaReader;
  */
 public final class PresetLoader {
     /** The presets that ship with the project, in the order the sketch offers them. */
-    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth", "table", "arm", "drop-fold", "fabric", "flag-fabric", "drape", "denim-fold", "mannequin-poncho", "mannequin-turn", "torus-spin", "crease", "pillow", "balloon", "skirt", "bordered-tablecloth", "drape-tester");
+    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth", "table", "arm", "drop-fold", "fabric", "flag-fabric", "drape", "denim-fold", "mannequin-poncho", "mannequin-turn", "torus-spin", "crease", "pillow", "balloon", "skirt", "tshirt", "bordered-tablecloth", "drape-tester");
 
     private PresetLoader() {}
 
@@ -708,14 +708,6 @@ public final class PresetLoader {
             Node continuous = optional(n, "continuous");
             return new Preset.SelfCollisionSpec(thickness, number(required(n, "staticFriction"), Limits.FRICTION), number(required(n, "kineticFriction"), Limits.FRICTION),
                     continuous != null && bool(continuous));
-        }
-
-        /** A direction: components in [-1, 1], not (almost) zero. */
-        double[] direction(Node nn) {
-            double[] d = vector(nn, Limits.NORMAL);
-            double len = Math.sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-            if (len < 1e-3) throw fail(nn.path, "must not be (almost) zero, had length " + len);
-            return d;
         }
 
         double margin(Node n) {

@@ -104,6 +104,43 @@ class SeamStitchesTest {
         }
     }
 
+    /**
+     * A sleeve round an arm slanted 45° out and down: wrapped round the axis (−1, 1, 0) through c, every vertex
+     * lies r from the axis, at y − cy along it, and at the angle 90° + (x − cx)/r from the front (+z) towards the
+     * side, side = axis × front, here (1, 1, 0)/√2, the top of a right arm; the pattern's y (the grain) runs
+     * along the axis. A vertical axis is the three-argument placement, bit for bit.
+     */
+    @Test
+    void aPanelWrappedRoundASlantedAxisLiesOnItsTube() {
+        double r = 0.06, s = Math.sqrt(0.5);
+        double[] c = {0.31, 1.28, 0}, axis = {-s, s, 0}, side = {s, s, 0}, front = {0, 0, 1};
+        Placement sleeve = Placement.around(c, new double[] {r, r}, 90, new double[] {-1, 1, 0});
+        PatternMesh m = PatternMesh.of(Patterns.single(Patterns.panel("sleeve", Patterns.rectangle(0.3, 0.2), sleeve)), EDGE);
+        double[] p = m.positions(), xy = m.flatPositions();
+        for (int i = 0; i < m.vertexCount(); i++) {
+            double[] d = {p[3 * i] - c[0], p[3 * i + 1] - c[1], p[3 * i + 2] - c[2]};
+            double along = dot(d, axis), across = dot(d, side), out = dot(d, front);
+            assertEquals(xy[2 * i + 1] - 0.1, along, 1e-12, "along the axis");
+            assertEquals(r, Math.hypot(across, out), 1e-12, "on the tube");
+            // (to 1e-6: the placement reads arc length off a table of 4096 chords round the ellipse)
+            double angle = Math.toRadians(90) + (xy[2 * i] - 0.15) / r;
+            assertEquals(Math.sin(angle), across / r, 1e-6, "arc length round the axis (side)");
+            assertEquals(Math.cos(angle), out / r, 1e-6, "arc length round the axis (front)");
+        }
+        double[] o = new double[6];
+        sleeve.place(0.1, 0.05, 0.15, 0.1, 0, 1, o);
+        assertArrayEquals(axis, new double[] {o[3], o[4], o[5]}, 1e-15, "the grain runs along the axis");
+        double[] v1 = new double[6], v2 = new double[6];
+        double[] centre = {0.02, 0.9, -0.01}, radii = {0.2, 0.13};
+        for (double x = 0; x <= 0.6; x += 0.05) {
+            Placement.around(centre, radii, 35).place(x, 0.3 * x, 0.25, 0.1, 0.6, 0.8, v1);
+            Placement.around(centre, radii, 35, new double[] {0, 2, 0}).place(x, 0.3 * x, 0.25, 0.1, 0.6, 0.8, v2);
+            assertArrayEquals(v1, v2, "vertical axis at x = " + x);
+        }
+    }
+
+    private static double dot(double[] a, double[] b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
     @Test
     void badPatternsAreRefusedNamingThePanelOrSeam() {
         assertTrue(assertThrows(IllegalArgumentException.class, () -> new Outline(new double[][] {{0, 0}, {0.2, 0.2}, {0.2, 0}, {0, 0.2}}, bowTieEdges()))

@@ -13,8 +13,8 @@ import xpbdcloth.pattern.PatternMesh;
 import xpbdcloth.pattern.Seam;
 
 /**
- * Each garment, sewn from its pattern (the skirt onto the dress form, the bordered tablecloth over the
- * table): every seam closed to under a millimetre by the end of the sewing time; the sewn garment's
+ * Each garment, sewn from its pattern (the skirt and the T-shirt onto the dress form, the bordered
+ * tablecloth over the table): every seam closed to under a millimetre by the end of the sewing time; the sewn garment's
  * triangles are the panels' (none lost, none twice); no two of its triangles cross at any step, on one
  * thread and on two (the coloured order); no particle inside the body.
  */
@@ -22,14 +22,22 @@ import xpbdcloth.pattern.Seam;
 class GarmentTest {
     @Test
     void theSkirtIsSewnShutWithoutCrossingItselfOrTheBody() {
-        for (int threads : new int[] {1, 2}) {
-            Scene scene = Scene.builtIn("skirt");
-            MeshCollider body = null;
-            for (RigidCollider c : scene.simulation().solids()) if (c instanceof MeshCollider) body = (MeshCollider) c;
-            assertNotNull(body);
-            MeshCollider form = body;
-            sewsShut(scene, threads, 50, (x, y, z) -> form.signedDistance(x, y, z) < 0);
-        }
+        for (int threads : new int[] {1, 2}) sewsShutOnTheDressForm("skirt", threads);
+    }
+
+    /** Front and back round the torso, a sleeve round each slanted arm: ten seams, four of them eased 7.9 %. */
+    @Test
+    void theTshirtIsSewnShutWithoutCrossingItselfOrTheBody() {
+        for (int threads : new int[] {1, 2}) sewsShutOnTheDressForm("tshirt", threads);
+    }
+
+    static void sewsShutOnTheDressForm(String garment, int threads) {
+        Scene scene = Scene.builtIn(garment);
+        MeshCollider body = null;
+        for (RigidCollider c : scene.simulation().solids()) if (c instanceof MeshCollider) body = (MeshCollider) c;
+        assertNotNull(body);
+        MeshCollider form = body;
+        sewsShut(scene, threads, 50, (x, y, z) -> form.signedDistance(x, y, z) < 0);
     }
 
     @Test

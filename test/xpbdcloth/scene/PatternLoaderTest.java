@@ -88,6 +88,8 @@ class PatternLoaderTest {
         assertEquals("p.json: panels[0].outline[1]: panel \"front\": an edge is an arc (\"bulge\") or a Bézier curve (\"controls\"), not both",
                 problem(RECTANGLES.replaceFirst("\\{\"at\": \\[0.4, 0\\]\\}", "{\"at\": [0.4, 0], \"bulge\": 0.1, \"controls\": [[0.5, 0.1], [0.5, 0.4]]}")));
         assertTrue(problem(RECTANGLES.replace("\"edge\": 0.05", "\"edge\": 0.001")).startsWith("p.json: edge: an edge of 0.00100 m would mesh the panels' 0.400 m² into about 461880 vertices; at most 50000 are allowed"));
+        assertEquals("p.json: panels[1].around.axis: must not be (almost) zero, had length 0.0",
+                problem(RECTANGLES.replace("\"position\": [0, 0, -0.2], \"rotation\": [0, 180, 0]", "\"around\": {\"centre\": [0, 1, 0], \"radii\": [0.1, 0.1], \"axis\": [0, 0, 0]}")));
         // Every problem of a file at once, a line each.
         String two = problem(RECTANGLES.replace("\"grain\": [0, 1], \"outline\": [{\"at\": [0, 0]}, {\"at\": [0.4, 0]}, {\"at\": [0.4, 0.5]}, {\"at\": [0, 0.5]}]},",
                 "\"grain\": [0, 0], \"outline\": [{\"at\": [0, 0]}, {\"at\": [0.4, 0]}, {\"at\": [0.4, 0.5]}, {\"at\": [0, 0.5]}]},").replace("\"wrap\"", "\"wrap\"").replace("\"rotation\": [0, 180, 0]", "\"rotation\": [0, 720, 0]"));

@@ -19,8 +19,8 @@ import xpbdcloth.scene.Scene;
  *
  * <p>Every field the loader accepts is drawn (a test holds the fuzzer to the loader's own list of fields):
  * grids and the shipped meshes (placed, welded, pinned by index, group or box; the closed pillow and balloon
- * filled by a pressure block: a gas by its gauge or its amount, in air or a vacuum, or a held volume; the skirt's
- * or the two-fabric tablecloth's pattern sewn as a garment at a coarse edge, its sewing drawn), spring
+ * filled by a pressure block: a gas by its gauge or its amount, in air or a vacuum, or a held volume; the skirt's,
+ * the T-shirt's or the two-fabric tablecloth's pattern sewn as a garment at a coarse edge, its sewing drawn), spring
  * families or a fabric (its moduli or a catalogue name, warp, tethers, plasticity, a catalogue fabric's
  * stiffening), every solver, spheres and colliders of every kind, pin motions (moves and turns), wind,
  * aerodynamics and self-collision.
@@ -179,12 +179,14 @@ final class PresetFuzz {
             int closed = mesh && closedDraw.nextInt(3) == 0 ? (fabric ? 0 : closedDraw.nextInt(CLOSED.length)) : -1;
             int facts = closed >= 0 ? MESHES.length + closed : meshIndex;
             Object meshFile = closed >= 0 ? CLOSED[closed][0] : MESHES[meshIndex][0], meshGroup = closed >= 0 ? CLOSED[closed][1] : MESHES[meshIndex][1];
-            // A garment (the skirt's pattern, one fabric, or the bordered tablecloth's, two; coarse: 5 to 20 cm edges) in one
-            // open-mesh case of four, from a stream of its own.
+            // A garment (the skirt's pattern or, one time in two, the T-shirt's, its sleeves about slanted axes, one
+            // fabric; or the bordered tablecloth's, two; coarse: 5 to 20 cm edges) in one open-mesh case of four, from a
+            // stream of its own (the T-shirt drawn last, so earlier seeds draw what they did but for it).
             Random garmentDraw = new Random(Double.doubleToLongBits(width) ^ rows ^ 0x5eed);
             boolean garment = mesh && closed < 0 && garmentDraw.nextInt(4) == 0;
             double edge = 0.05 + 0.15 * garmentDraw.nextDouble();
             String pattern = garmentDraw.nextBoolean() ? "skirt" : "tablecloth";
+            if (pattern.equals("skirt") && garmentDraw.nextBoolean()) pattern = "tshirt";
             xpbdcloth.mesh.ClothMesh garmentMesh = garment ? xpbdcloth.scene.PatternLoader.byNameOrPath(pattern).mesh(edge).toClothMesh() : null;
             long particles = garment ? garmentMesh.vertexCount()
                     : mesh ? (long) meshFacts()[2 * facts] : (long) columns * rows;
