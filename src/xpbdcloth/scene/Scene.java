@@ -253,6 +253,17 @@ public final class Scene {
     }
 
     /**
+     * The fabrics the cloth is cut from now, each once, in the pattern's order: a garment's panels' (until
+     * {@link #useFabric} makes them one), or the one fabric of any other cloth; empty for a cloth of springs.
+     */
+    public java.util.List<Fabric> fabrics() {
+        if (panelFabrics == null) return fabric == null ? java.util.List.of() : java.util.List.of(fabric);
+        java.util.List<Fabric> out = new java.util.ArrayList<>();
+        for (Fabric f : panelFabrics) if (!out.contains(f)) out.add(f);
+        return out;
+    }
+
+    /**
      * Which panels of a garment of several fabrics are cut from which, in the pattern's order ("tablecloth
      * (top), denim (front border, right border)"); null when the cloth is one fabric.
      */

@@ -37,6 +37,13 @@ final class Hud {
 
     static String fmt(String f, Object... a) { return String.format(Locale.ROOT, f, a); }
 
+    /** "name numbers;  name numbers" for each fabric a garment is cut from. */
+    static String eachFabric(java.util.List<Fabric> fabrics, java.util.function.Function<Fabric, String> numbers) {
+        java.util.StringJoiner out = new java.util.StringJoiner(";  ");
+        for (Fabric f : fabrics) out.add(f.name + " " + numbers.apply(f));
+        return out.toString();
+    }
+
     /** The text lines, formatted a few times a second rather than every frame: formatting allocates. */
     private String[] lines = new String[0];
     private int framesSinceFormat = Integer.MAX_VALUE;
@@ -81,6 +88,8 @@ final class Hud {
         Material km = s.material(fam);
         String famName = s.family() == null ? "all (showing " + fam.name().toLowerCase(Locale.ROOT) + ")" : fam.name().toLowerCase(Locale.ROOT);
         Fabric fabric = s.fabric();
+        // A garment of several fabrics: each one's numbers, not only the first panel's.
+        java.util.List<Fabric> cut = running.get(0).fabrics();
         boolean tethered = s.preset().fabric != null && s.preset().fabric.tethers;
         int constraints = 0;
         for (Scene sc : running) constraints += sc.simulation().constraintCount();
@@ -93,10 +102,12 @@ final class Hud {
                 km == null ? (running.get(0).cutFrom() != null ? fmt("fabrics %s   (F: all one fabric)", running.get(0).cutFrom())
                         : fmt("fabric %s%s%s   (F: next fabric)", fabric == null ? "(none)" : fabric.name, fabric == null || fabric.description.isEmpty() ? "" : " — " + fabric.description,
                         tethered ? ", tethered" : "")) : fmt("family %s", famName),
-                km == null ? (fabric == null ? "" : fmt("  membrane warp %.0f N/m  weft %.0f N/m  ν12 %.2f  shear %.0f N/m", fabric.membrane.warpModulus,
+                km == null ? (fabric == null ? "" : cut.size() > 1 ? "  membrane warp / weft / shear N/m: " + eachFabric(cut, f -> fmt("%.0f / %.0f / %.0f", f.membrane.warpModulus, f.membrane.weftModulus, f.membrane.shearModulus))
+                        : fmt("  membrane warp %.0f N/m  weft %.0f N/m  ν12 %.2f  shear %.0f N/m", fabric.membrane.warpModulus,
                         fabric.membrane.weftModulus, fabric.membrane.poisson, fabric.membrane.shearModulus))
                         : fmt("  PBD  k %.2f  →  k' %.4f %s", km.stiffness, kPrime(s, km.stiffness), s.mullerCorrection() ? "(Müller, n=" + s.iterations() + ")" : "(raw k)"),
-                km == null ? (fabric == null ? "" : fmt("  bending %.1e N·m, %s%s", fabric.bendingStiffness, running.get(0).bendingModel(),
+                km == null ? (fabric == null ? "" : cut.size() > 1 ? "  bending N·m, g/m²: " + eachFabric(cut, f -> fmt("%.1e, %.0f", f.bendingStiffness, 1000 * f.arealDensity)) + ", " + running.get(0).bendingModel()
+                        : fmt("  bending %.1e N·m, %s%s", fabric.bendingStiffness, running.get(0).bendingModel(),
                         Double.isNaN(fabric.arealDensity) ? "" : fmt("   %.0f g/m²", 1000 * fabric.arealDensity)))
                         : fmt("  XPBD α %.2e m/N  →  1/α %s", km.compliance, km.compliance == 0 ? "infinite (hard)" : fmt("%.2e N/m", 1 / km.compliance)),
                 recording ? fmt("recording: %.4g frames per simulated second (wall-clock timings not drawn)", 1 / (xpbdcloth.scene.ObjExport.stepsPerFrame(s.dt()) * s.dt()))

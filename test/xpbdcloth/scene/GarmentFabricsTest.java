@@ -31,6 +31,7 @@ class GarmentFabricsTest {
         PatternMesh pattern = scene.preset().cloth.garment.pattern;
         double top = FabricCatalogue.named("tablecloth").arealDensity, border = FabricCatalogue.named("denim").arealDensity;
         assertEquals("tablecloth (top), denim (front border, right border, back border, left border)", scene.cutFrom());
+        assertEquals(java.util.List.of(FabricCatalogue.named("tablecloth"), FabricCatalogue.named("denim")), scene.fabrics(), "each fabric once");
         double[] expected = lumped(pattern, new double[] {top, border, border, border, border});
         Particles p = scene.cloth().particles();
         double total = 0;
@@ -44,6 +45,7 @@ class GarmentFabricsTest {
         Fabric interlock = FabricCatalogue.named("interlock");
         scene.useFabric(interlock);
         assertNull(scene.cutFrom(), "one fabric now");
+        assertEquals(java.util.List.of(interlock), scene.fabrics());
         double ρ = interlock.arealDensity;
         expected = lumped(pattern, new double[] {ρ, ρ, ρ, ρ, ρ});
         total = 0;
