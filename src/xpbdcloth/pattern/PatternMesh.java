@@ -315,7 +315,8 @@ public final class PatternMesh {
      * The hinges across the seams once closed: per pair of consecutive stitches, the two outline triangles on
      * either side, as (o0, o1, e0, e1) with the edge e0–e1 on side a (o0's triangle wound e0, e1, o0 and o1's
      * e1, e0, o1 counter-clockwise: a flat seam is a dihedral angle of 0), with (A₀ + A₁)/|e|² in the flat
-     * pattern (|e|² the mean of the two sides', eased or not).
+     * pattern (|e|² the mean of the two sides', eased or not). A seam whose triangles on its two sides share
+     * their far corner is refused (IllegalArgumentException naming the seam): the mesh is too coarse for it.
      */
     public SeamHinges seamHinges() {
         int count = 0;
@@ -331,19 +332,27 @@ public final class PatternMesh {
                 opposite.put((long) a << 32 | b, triangles[t + (k + 2) % 3]);
             }
         int h = 0;
-        for (int[] pairs : stitches.values())
+        for (Map.Entry<String, int[]> seam : stitches.entrySet()) {
+            int[] pairs = seam.getValue();
             for (int k = 0; k + 3 < pairs.length; k += 2) {
                 int a0 = pairs[k], b0 = pairs[k + 1], a1 = pairs[k + 2], b1 = pairs[k + 3];
                 boolean forward = opposite.containsKey((long) a0 << 32 | a1);
                 int e0 = forward ? a0 : a1, e1 = forward ? a1 : a0, f0 = forward ? b1 : b0, f1 = forward ? b0 : b1;
                 Integer o0 = opposite.get((long) e0 << 32 | e1), o1 = opposite.get((long) f0 << 32 | f1);
                 if (o0 == null || o1 == null || uses.get(undirected(e0, e1)) != 1 || uses.get(undirected(f0, f1)) != 1)
-                    throw new IllegalStateException("stitches " + k / 2 + " and " + (k / 2 + 1) + " are not an outline edge on both sides");
+                    throw new IllegalArgumentException("seam \"" + seam.getKey() + "\": stitches " + k / 2 + " and " + (k / 2 + 1) + " are not joined by an outline edge on both sides");
+                // One triangle reaching from one side of a seam to the other (a sleeve meshed two edges round):
+                // closed, the seam would lay its two triangles face to face as one.
+                if (o0.equals(o1))
+                    throw new IllegalArgumentException("seam \"" + seam.getKey() + "\" would close two triangles into one (vertex " + o0
+                            + " is the far corner of the triangles on both its sides, at stitches " + k / 2 + " and " + (k / 2 + 1)
+                            + "): the panels are meshed too coarsely for it; a shorter edge gives the seam room");
                 double e2 = (flatDistance2(e0, e1) + flatDistance2(f0, f1)) / 2;
                 rest[h] = (flatArea(o0, e0, e1) + flatArea(o1, f0, f1)) / e2;
                 hinge[4 * h] = o0; hinge[4 * h + 1] = o1; hinge[4 * h + 2] = e0; hinge[4 * h + 3] = e1;
                 h++;
             }
+        }
         return new SeamHinges(hinge, rest);
     }
 

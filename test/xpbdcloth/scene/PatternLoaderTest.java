@@ -73,6 +73,25 @@ class PatternLoaderTest {
         assertEquals(2 * 26, p.mesh(p.edge).stitches("side").length, "0.5 m at 0.02 m: 25 segments");
     }
 
+    /**
+     * A pattern meshed too coarsely for its seams is refused when the preset loads, naming the edge and the
+     * seam: at 15 cm the T-shirt's 36 cm sleeve is one triangle from one side of its underarm seam to the other
+     * (closed, the two triangles there would be one, face to face); at 10.65 cm a side of the skirt's front gore
+     * meshes without one of its outline edges between two stitches. The built-in edges sew (GarmentTest).
+     */
+    @Test
+    void aPatternTooCoarseForItsSeamsIsRefusedNamingTheEdgeAndTheSeam() {
+        String preset = "{ \"name\": \"g\", \"description\": \"x\", \"cloth\": { \"pattern\": \"%s\", \"edge\": %s },"
+                + " \"solver\": { \"mode\": \"XPBD\", \"iterations\": 3, \"substeps\": 5, \"dt\": 0.02, \"mullerCorrection\": true, \"gravity\": [0, -9.81, 0] } }";
+        PresetException shirt = assertThrows(PresetException.class, () -> PresetLoader.parse("g.json", String.format(preset, "tshirt", "0.15")));
+        assertEquals("cloth.edge", shirt.field());
+        assertTrue(shirt.problem().startsWith("tshirt: at an edge of 0.150 m, seam \"right underarm\" would close two triangles into one"), shirt.problem());
+        PresetException skirt = assertThrows(PresetException.class, () -> PresetLoader.parse("g.json", String.format(preset, "skirt", "0.1065")));
+        assertEquals("cloth.edge", skirt.field());
+        assertTrue(skirt.problem().startsWith("skirt: at an edge of 0.107 m, seam \"front–left side\": stitches 1 and 2 are not joined by an outline edge"), skirt.problem());
+        assertDoesNotThrow(() -> PresetLoader.parse("g.json", String.format(preset, "tshirt", "0.05")));
+    }
+
     @Test
     void badPatternsAreNamedByFieldAndByPanelOrSeam() {
         assertEquals("p.json: panels[1].fabric: is missing", problem(RECTANGLES.replace("{\"name\": \"back\", \"fabric\": \"denim\",", "{\"name\": \"back\",")));

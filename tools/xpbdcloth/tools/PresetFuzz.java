@@ -64,6 +64,16 @@ final class PresetFuzz {
         return meshFacts = out;
     }
 
+    /** Whether every seam of the meshed pattern can close ({@link xpbdcloth.pattern.PatternMesh#seamHinges}). */
+    static boolean closes(xpbdcloth.pattern.PatternMesh mesh) {
+        try {
+            mesh.seamHinges();
+            return true;
+        } catch (IllegalArgumentException tooCoarse) {
+            return false;
+        }
+    }
+
     /** The preset a seed draws (its text only, nothing run). */
     static String text(long seed) {
         return new Case(new Random(seed), new Random(~seed)).json();
@@ -187,7 +197,14 @@ final class PresetFuzz {
             double edge = 0.05 + 0.15 * garmentDraw.nextDouble();
             String pattern = garmentDraw.nextBoolean() ? "skirt" : "tablecloth";
             if (pattern.equals("skirt") && garmentDraw.nextBoolean()) pattern = "tshirt";
-            xpbdcloth.mesh.ClothMesh garmentMesh = garment ? xpbdcloth.scene.PatternLoader.byNameOrPath(pattern).mesh(edge).toClothMesh() : null;
+            xpbdcloth.mesh.ClothMesh garmentMesh = null;
+            if (garment) {
+                // Some coarse edges leave a seam no room to close (the loader refuses those, naming cloth.edge,
+                // PatternLoaderTest): the edge drawn is shortened by a tenth until its seams close.
+                xpbdcloth.scene.PatternLoader.Loaded loaded = xpbdcloth.scene.PatternLoader.byNameOrPath(pattern);
+                while (!closes(loaded.mesh(edge))) edge *= 0.9;
+                garmentMesh = loaded.mesh(edge).toClothMesh();
+            }
             long particles = garment ? garmentMesh.vertexCount()
                     : mesh ? (long) meshFacts()[2 * facts] : (long) columns * rows;
             double budget = global ? WORK_BUDGET / 100 : WORK_BUDGET;
