@@ -319,6 +319,33 @@ public final class PatternMesh {
      * their far corner is refused (IllegalArgumentException naming the seam): the mesh is too coarse for it.
      */
     public SeamHinges seamHinges() {
+        closeSeams();
+        if (seamProblem != null) throw new IllegalArgumentException(seamProblem);
+        return seamHinges;
+    }
+
+    /**
+     * Why the seams cannot close as meshed (the message {@link #seamHinges} throws), or null when they can:
+     * one check for the loader, the fuzzer and the {@code pattern} command, computed once per mesh.
+     */
+    public String seamProblem() {
+        closeSeams();
+        return seamProblem;
+    }
+
+    private SeamHinges seamHinges;
+    private String seamProblem;
+
+    private void closeSeams() {
+        if (seamHinges != null || seamProblem != null) return;
+        try {
+            seamHinges = buildSeamHinges();
+        } catch (IllegalArgumentException tooCoarse) {
+            seamProblem = tooCoarse.getMessage();
+        }
+    }
+
+    private SeamHinges buildSeamHinges() {
         int count = 0;
         for (int[] pairs : stitches.values()) count += Math.max(0, pairs.length / 2 - 1);
         int[] hinge = new int[4 * count];

@@ -432,11 +432,9 @@ public final class PresetLoader {
             }
             double[] mass = mass(n, cut);
             xpbdcloth.pattern.PatternMesh mesh = loaded.mesh(edge);
-            try {
-                mesh.seamHinges();
-            } catch (IllegalArgumentException tooCoarse) {
-                throw fail(e == null ? pn.path : e.path, name + ": at an edge of " + String.format(java.util.Locale.ROOT, "%.3g", edge) + " m, " + tooCoarse.getMessage());
-            }
+            String tooCoarse = mesh.seamProblem();
+            if (tooCoarse != null)
+                throw fail(e == null ? pn.path : e.path, name + ": at an edge of " + String.format(java.util.Locale.ROOT, "%.3g", edge) + " m, " + tooCoarse);
             return new Preset.Cloth(mesh.toClothMesh(), name, mass[0], mass[1], new int[0], new Preset.GarmentSpec(mesh, cut, panelFabrics, time, compliance, seam));
         }
 

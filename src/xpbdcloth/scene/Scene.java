@@ -53,6 +53,8 @@ public final class Scene {
     /** A garment's panels' fabrics now (the preset's, until {@link #useFabric} makes them all one), or null; and {@link #cutFrom}'s text for them. */
     private Fabric[] panelFabrics;
     private String cutFrom;
+    /** {@link #fabrics}, kept as the fabrics change (the HUD asks every frame). */
+    private java.util.List<Fabric> fabrics = java.util.List.of();
     /** A garment's sewing, or null; and its particles' representatives once sewn ({@link xpbdcloth.pattern.PatternMesh#welded}). */
     private Sewing sewing;
     private int[] welded;
@@ -74,7 +76,6 @@ public final class Scene {
             if (garment != null) {
                 panelFabrics = garment.panelFabrics();
                 PanelFabrics.apply(simulation.blocks(), cloth.particles(), garment.pattern.panelOfVertex(), garment.pattern.panelOfTriangle(), panelFabrics);
-                cutFrom = describeCut();
             }
             if (placed != null) for (int i = 0; i < cloth.particles().count(); i++) cloth.particles().setPosition(i, placed[3 * i], placed[3 * i + 1], placed[3 * i + 2]);
             if (f.plasticity != null) {
@@ -87,6 +88,7 @@ public final class Scene {
             }
             for (ConstraintBlock b : simulation.blocks()) bendsByHinges |= b instanceof DihedralBlock;
             fabric = f.fabric;
+            noteCut();
         }
         if (garment != null) {
             xpbdcloth.pattern.PatternMesh.SeamHinges hinges = garment.pattern.seamHinges();
@@ -245,23 +247,18 @@ public final class Scene {
             java.util.Arrays.fill(panelFabrics, next);
             Preset.GarmentSpec garment = preset.cloth.garment;
             PanelFabrics.apply(simulation.blocks(), cloth.particles(), garment.pattern.panelOfVertex(), garment.pattern.panelOfTriangle(), panelFabrics);
-            cutFrom = describeCut();
         } else FabricSwap.apply(simulation.blocks(), cloth.particles(), next);
         if (stiffening != null) stiffening.use(next.stretchingCurve);
         if (sewing != null) sewing.useBendingStiffness(next.bendingStiffness);
         fabric = next;
+        noteCut();
     }
 
     /**
      * The fabrics the cloth is cut from now, each once, in the pattern's order: a garment's panels' (until
      * {@link #useFabric} makes them one), or the one fabric of any other cloth; empty for a cloth of springs.
      */
-    public java.util.List<Fabric> fabrics() {
-        if (panelFabrics == null) return fabric == null ? java.util.List.of() : java.util.List.of(fabric);
-        java.util.List<Fabric> out = new java.util.ArrayList<>();
-        for (Fabric f : panelFabrics) if (!out.contains(f)) out.add(f);
-        return out;
-    }
+    public java.util.List<Fabric> fabrics() { return fabrics; }
 
     /**
      * Which panels of a garment of several fabrics are cut from which, in the pattern's order ("tablecloth
@@ -269,8 +266,19 @@ public final class Scene {
      */
     public String cutFrom() { return cutFrom; }
 
+    /** Sets {@link #fabrics} and {@link #cutFrom} from the fabric and the panels' fabrics now. */
+    private void noteCut() {
+        if (panelFabrics == null) {
+            fabrics = java.util.List.of(fabric);
+            return;
+        }
+        java.util.List<Fabric> each = new java.util.ArrayList<>();
+        for (Fabric f : panelFabrics) if (!each.contains(f)) each.add(f);
+        fabrics = java.util.Collections.unmodifiableList(each);
+        cutFrom = describeCut();
+    }
+
     private String describeCut() {
-        if (panelFabrics == null) return null;
         java.util.Map<String, java.util.List<String>> panelsOf = new java.util.LinkedHashMap<>();
         java.util.List<xpbdcloth.pattern.Panel> panels = preset.cloth.garment.pattern.pattern.panels();
         for (int i = 0; i < panelFabrics.length; i++) panelsOf.computeIfAbsent(panelFabrics[i].name, k -> new java.util.ArrayList<>()).add(panels.get(i).name);

@@ -92,4 +92,22 @@ class CommandLineTest {
         assertNull(refusal("--scene", "rope"), "options alone open the window with them");
         assertNull(refusal("bench"));
     }
+
+    /**
+     * `pattern` says when a mesh is too coarse for a seam to close, as the loader would refuse a preset sewing
+     * it (exit 2, the seam named); at the pattern's own edge the T-shirt's seams close (exit 0).
+     */
+    @Test
+    void patternSaysWhenASeamCannotClose() {
+        CommandLine cli = new CommandLine(new Main());
+        StringWriter out = new StringWriter(), err = new StringWriter();
+        cli.setOut(new PrintWriter(out, true));
+        cli.setErr(new PrintWriter(err, true));
+        assertEquals(2, cli.execute("pattern", "tshirt", "--edge", "0.15"));
+        assertTrue(err.toString().contains("at an edge of 0.150 m, seam \"") && err.toString().contains("would close two triangles into one"), err.toString());
+        assertTrue(out.toString().contains("tshirt: 4 panels, 10 seams"), "the report is still printed: " + out);
+        err.getBuffer().setLength(0);
+        assertEquals(0, cli.execute("pattern", "tshirt"));
+        assertEquals("", err.toString());
+    }
 }

@@ -16,7 +16,8 @@ import xpbdcloth.scene.PatternLoader;
  * {@code xpbd-cloth pattern PATTERN [--edge M] [--out FILE.obj]}: meshes a garment pattern's panels and says
  * how well (per panel: vertices, triangles, the smallest angle, the triangles' sizes against the target; per
  * seam: its stitches and how much one side is eased into the other); writes the placed panels as OBJ with
- * their fabric coordinates as texture coordinates and a group per panel and seam.
+ * their fabric coordinates as texture coordinates and a group per panel and seam. Exits 2, saying why, when
+ * the mesh is too coarse for a seam to close (a preset sewing it would be refused).
  */
 @Command(name = "pattern", mixinStandardHelpOptions = true, showDefaultValues = true,
         description = "Meshes a garment pattern (built-in name or file) and reports each panel's mesh quality and each seam's stitches; --out writes the placed panels as OBJ.")
@@ -60,6 +61,12 @@ final class PatternCommand implements Callable<Integer> {
             w.println("wrote " + out);
         }
         w.flush();
+        // The panels mesh, but a preset sewing them would be refused: say so, as the loader would.
+        String tooCoarse = mesh.seamProblem();
+        if (tooCoarse != null) {
+            spec.commandLine().getErr().printf("xpbd-cloth pattern: at an edge of %.3g m, %s%n", h, tooCoarse);
+            return 2;
+        }
         return 0;
     }
 }

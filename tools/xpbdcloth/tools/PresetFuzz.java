@@ -64,16 +64,6 @@ final class PresetFuzz {
         return meshFacts = out;
     }
 
-    /** Whether every seam of the meshed pattern can close ({@link xpbdcloth.pattern.PatternMesh#seamHinges}). */
-    static boolean closes(xpbdcloth.pattern.PatternMesh mesh) {
-        try {
-            mesh.seamHinges();
-            return true;
-        } catch (IllegalArgumentException tooCoarse) {
-            return false;
-        }
-    }
-
     /** The preset a seed draws (its text only, nothing run). */
     static String text(long seed) {
         return new Case(new Random(seed), new Random(~seed)).json();
@@ -202,8 +192,9 @@ final class PresetFuzz {
                 // Some coarse edges leave a seam no room to close (the loader refuses those, naming cloth.edge,
                 // PatternLoaderTest): the edge drawn is shortened by a tenth until its seams close.
                 xpbdcloth.scene.PatternLoader.Loaded loaded = xpbdcloth.scene.PatternLoader.byNameOrPath(pattern);
-                while (!closes(loaded.mesh(edge))) edge *= 0.9;
-                garmentMesh = loaded.mesh(edge).toClothMesh();
+                xpbdcloth.pattern.PatternMesh meshed = loaded.mesh(edge);
+                while (meshed.seamProblem() != null) meshed = loaded.mesh(edge *= 0.9);
+                garmentMesh = meshed.toClothMesh();
             }
             long particles = garment ? garmentMesh.vertexCount()
                     : mesh ? (long) meshFacts()[2 * facts] : (long) columns * rows;
