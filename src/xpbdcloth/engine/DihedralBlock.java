@@ -84,6 +84,9 @@ public final class DihedralBlock extends ConstraintBlock {
 
     public double restAngle(int i) { return restAngle[i]; }
 
+    /** (A₀ + A₁)/|e|² of constraint i at rest, 1 (its curvature is |θ − θ₀| over this times |e|). */
+    public double restAreaOverEdgeSquared(int i) { return areaOverEdgeSquared[i]; }
+
     /** The signed dihedral angle θ of constraint i, rad. */
     public double angle(int i, Particles p) { return angleAndGradient(i, p.x, null); }
 

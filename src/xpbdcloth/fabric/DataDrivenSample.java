@@ -26,19 +26,24 @@ public final class DataDrivenSample {
      * @param bending    the three zero-curvature bending values as tabulated (0°, 45°, 90°)
      */
     public static Fabric fabric(String name, String description, String source, double arealDensity, double[] stretching, double[] bending) {
-        return fabric(name, description, source, arealDensity, stretching, bending, null);
+        return fabric(name, description, source, arealDensity, stretching, bending, null, null);
     }
 
-    /** As above, with the five samples at 1/6 stretch that make the whole measured curve ({@link StretchingCurve}), or null. */
+    /**
+     * As above, with the five samples at 1/6 stretch that make the whole measured stretching curve
+     * ({@link StretchingCurve}), or null; and per direction the four samples at larger curvature that make
+     * the whole bending curve ({@link BendingCurve}), or null.
+     */
     public static Fabric fabric(String name, String description, String source, double arealDensity, double[] stretching, double[] bending,
-                                double[][] stretchingCurve) {
+                                double[][] stretchingCurve, double[][] bendingCurve) {
         if (stretching == null || stretching.length != 4)
             throw new IllegalArgumentException("stretching must hold 4 numbers (k0, k1, k2, k3), was " + java.util.Arrays.toString(stretching));
         if (bending == null || bending.length != 3)
             throw new IllegalArgumentException("bending must hold 3 numbers (0°, 45°, 90°), was " + java.util.Arrays.toString(bending));
         OrthotropicMaterial m = OrthotropicMaterial.fromStiffness(2 * stretching[0], 2 * stretching[1], 2 * stretching[2], stretching[3]);
         return new Fabric(name, description, source, arealDensity, m, bendingStiffness(bending),
-                stretchingCurve == null ? null : new StretchingCurve(stretching, stretchingCurve));
+                stretchingCurve == null ? null : new StretchingCurve(stretching, stretchingCurve),
+                bendingCurve == null ? null : new BendingCurve(bending, bendingCurve));
     }
 
     /** B (N·m) from the three zero-curvature samples: the mean of 0° and 90°, over ARCSim's factor 4. */

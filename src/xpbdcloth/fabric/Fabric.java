@@ -19,13 +19,15 @@ public final class Fabric {
     public final double bendingStiffness;
     /** The measured stretching beyond small strain, or null (the fabric is the linear membrane alone). */
     public final StretchingCurve stretchingCurve;
+    /** The measured bending beyond small curvature, or null (the fabric bends linearly with B alone). */
+    public final BendingCurve bendingCurve;
 
     public Fabric(String name, String description, String source, double arealDensity, OrthotropicMaterial membrane, double bendingStiffness) {
-        this(name, description, source, arealDensity, membrane, bendingStiffness, null);
+        this(name, description, source, arealDensity, membrane, bendingStiffness, null, null);
     }
 
     public Fabric(String name, String description, String source, double arealDensity, OrthotropicMaterial membrane, double bendingStiffness,
-                  StretchingCurve stretchingCurve) {
+                  StretchingCurve stretchingCurve, BendingCurve bendingCurve) {
         if (name == null) throw new IllegalArgumentException("name must not be null, was null");
         if (membrane == null) throw new IllegalArgumentException("membrane must not be null, was null");
         if (!Double.isNaN(arealDensity) && !(arealDensity > 0 && arealDensity < 1e3))
@@ -39,6 +41,7 @@ public final class Fabric {
         this.membrane = membrane;
         this.bendingStiffness = bendingStiffness;
         this.stretchingCurve = stretchingCurve;
+        this.bendingCurve = bendingCurve;
     }
 
     @Override public String toString() { return name; }

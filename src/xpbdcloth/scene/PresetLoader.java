@@ -573,14 +573,14 @@ public final class PresetLoader {
             List<Fabric> out = new ArrayList<>();
             Set<String> names = new java.util.HashSet<>();
             for (Node f : array(required(root, "fabrics"), 1000)) {
-                object(f, Set.of("name", "description", "sample", "arealDensity", "stretching", "bending", "stretchingCurve"));
+                object(f, Set.of("name", "description", "sample", "arealDensity", "stretching", "bending", "stretchingCurve", "bendingCurve"));
                 Node nm = required(f, "name");
                 String name = string(nm);
                 if (!names.add(name)) throw fail(nm.path, "\"" + name + "\" is listed twice");
                 double density = number(required(f, "arealDensity"), Limits.AREAL_DENSITY);
                 Node st = required(f, "stretching"), bd = required(f, "bending");
                 double[] stretching = numbers(st, 4, Limits.MODULUS.hi), bending = numbers(bd, 3, Limits.BENDING_STIFFNESS.hi);
-                Node d = optional(f, "description"), sc = optional(f, "stretchingCurve");
+                Node d = optional(f, "description"), sc = optional(f, "stretchingCurve"), bc = optional(f, "bendingCurve");
                 String sample = string(required(f, "sample"));
                 double[][] curve = null;
                 if (sc != null) {
@@ -588,8 +588,18 @@ public final class PresetLoader {
                     curve = new double[5][];
                     for (int j = 0; j < 5; j++) curve[j] = numbers(new Node(sc.json.get(j), sc.path + "[" + j + "]"), 4, Limits.MODULUS.hi);
                 }
+                double[][] bendingCurve = null;
+                if (bc != null) {
+                    if (!bc.json.isArray() || bc.json.size() != 3) throw fail(bc.path, "must be 3 rows (0°, 45°, 90°) of 4 numbers (α = 5, 10, 15, 20 /m), was " + describe(bc.json));
+                    bendingCurve = new double[3][];
+                    for (int j = 0; j < 3; j++) {
+                        bendingCurve[j] = numbers(new Node(bc.json.get(j), bc.path + "[" + j + "]"), 4, Limits.BENDING_STIFFNESS.hi);
+                        for (int i = 0; i < 4; i++)
+                            if (bendingCurve[j][i] < 0) throw fail(bc.path + "[" + j + "][" + i + "]", "must not be negative, was " + bendingCurve[j][i]);
+                    }
+                }
                 try {
-                    out.add(DataDrivenSample.fabric(name, d == null ? "" : string(d), source + ", sample \"" + sample + "\"", density, stretching, bending, curve));
+                    out.add(DataDrivenSample.fabric(name, d == null ? "" : string(d), source + ", sample \"" + sample + "\"", density, stretching, bending, curve, bendingCurve));
                 } catch (IllegalArgumentException e) {
                     throw fail(st.path, e.getMessage());
                 }

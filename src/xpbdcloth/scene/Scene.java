@@ -44,6 +44,8 @@ public final class Scene {
     /** The fabric's yielding hinges and its measured stiffening, each null when the preset asks for none. */
     private HingePlasticity plasticity;
     private MeasuredStiffening stiffening;
+    /** The fabric's hinges following its measured bending curve (with stiffening, when the fabric has one), or null. */
+    private xpbdcloth.fabric.MeasuredBending measuredBending;
     /** The gas (or held volume) inside the cloth, or null when the preset fills it with nothing. */
     private EnclosedGas gas;
     /** The gas's nRT as the preset filled it (J), what the gas keys pump around. */
@@ -71,8 +73,12 @@ public final class Scene {
             // built with each particle where it lies on its panel, then the panels go back where they start.
             double[] placed = garment == null ? null : flatten(cloth.particles(), garment.pattern.flatPositions());
             double[] warp = f.warp != null ? f.warp : FabricConstraints.warpFromTextureCoordinates(cloth.particles(), cloth.triangles(), preset.cloth.mesh.triangleUVs());
-            for (ConstraintBlock b : FabricConstraints.build(cloth.particles(), cloth.triangles(), warp, f.fabric.membrane, f.fabric.bendingStiffness, f.tethers, f.plasticity != null))
+            // A stiffness that follows the curvature, as a rest angle that yields, needs the fabric's hinges dihedral.
+            boolean bendingCurve = f.stiffening && f.fabric.bendingCurve != null;
+            for (ConstraintBlock b : FabricConstraints.build(cloth.particles(), cloth.triangles(), warp, f.fabric.membrane, f.fabric.bendingStiffness, f.tethers,
+                    f.plasticity != null || bendingCurve))
                 simulation.add(b);
+            if (bendingCurve) measuredBending = new xpbdcloth.fabric.MeasuredBending(simulation.blocks(), cloth.particles(), cloth.triangles(), warp, f.fabric.bendingCurve);
             if (garment != null) {
                 panelFabrics = garment.panelFabrics();
                 PanelFabrics.apply(simulation.blocks(), cloth.particles(), garment.pattern.panelOfVertex(), garment.pattern.panelOfTriangle(), panelFabrics);
@@ -86,6 +92,7 @@ public final class Scene {
                 stiffening = new MeasuredStiffening(simulation.blocks(), f.fabric.stretchingCurve);
                 simulation.add(stiffening);
             }
+            if (measuredBending != null) simulation.add(measuredBending);
             for (ConstraintBlock b : simulation.blocks()) bendsByHinges |= b instanceof DihedralBlock;
             fabric = f.fabric;
             noteCut();
@@ -249,6 +256,7 @@ public final class Scene {
             PanelFabrics.apply(simulation.blocks(), cloth.particles(), garment.pattern.panelOfVertex(), garment.pattern.panelOfTriangle(), panelFabrics);
         } else FabricSwap.apply(simulation.blocks(), cloth.particles(), next);
         if (stiffening != null) stiffening.use(next.stretchingCurve);
+        if (measuredBending != null) measuredBending.use(next.bendingCurve);
         if (sewing != null) sewing.useBendingStiffness(next.bendingStiffness);
         fabric = next;
         noteCut();
@@ -316,6 +324,7 @@ public final class Scene {
     /** How the fabric bends, in words: plate patches on a flat rest, dihedral hinges where it is bent or may yield. */
     public String bendingModel() {
         if (plasticity != null) return String.format(Locale.ROOT, "dihedral hinges yielding past %.3g/m (a crease)", plasticity.yieldCurvature());
+        if (measuredBending != null) return "dihedral hinges following the measured bending curve";
         return bendsByHinges ? "dihedral hinges (a bent rest)" : "the plate's on every triangle";
     }
     public Cloth cloth() { return cloth; }

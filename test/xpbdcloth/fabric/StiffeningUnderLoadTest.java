@@ -31,7 +31,7 @@ class StiffeningUnderLoadTest {
         Cloth strip = new ClothBuilder().resolution(5, 13).size(0.04, 0.12).arealDensity(40).pinTopCorners().build();
         Particles p = strip.particles();
         for (int c = 0; c < 5; c++) p.pin(strip.index(0, c));
-        Fabric denim = DataDrivenSample.fabric("denim", "", "", 0.324, DENIM_ZERO, new double[] {64e-6, 73e-6, 97e-6}, DENIM_CURVE);
+        Fabric denim = DataDrivenSample.fabric("denim", "", "", 0.324, DENIM_ZERO, new double[] {64e-6, 73e-6, 97e-6}, DENIM_CURVE, null);
         Simulation sim = new Simulation(p, new SolverSettings().withMode(ConstraintMode.XPBD).withSolver(SolverType.VERTEX_BLOCK_DESCENT)
                 .withIterations(4).withSubsteps(5).withTimestep(0.01).withDamping(20));
         // Warp along the strip's length (y): it hangs by its warp.

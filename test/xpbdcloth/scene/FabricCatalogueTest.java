@@ -153,6 +153,16 @@ class FabricCatalogueTest {
         assertTrue(e.problem().contains("positive-definite"), e.getMessage());
         e = assertThrows(PresetException.class, () -> PresetLoader.parseCatalogue("fabrics.json", broken.replace("[59e-6, 40e-6, 45e-6]", "[59e-6, 40e-6]")));
         assertEquals("fabrics[0].bending", e.field());
+        // A bending curve of the wrong shape, or with a negative sample, is named to the sample.
+        String denim = "{ \"source\": \"s\", \"fabrics\": [ { \"name\": \"x\", \"sample\": \"11oz-black-denim\", \"arealDensity\": 0.324,"
+                + " \"stretching\": [205.352005, 10.234077, 1013.88629, 53.387184], \"bending\": [64e-6, 73e-6, 97e-6],"
+                + " \"bendingCurve\": [[60e-6, 61e-6, 62e-6, 20e-6], [60e-6, 61e-6, 68e-6, 36e-6], [108e-6, 113e-6, 121e-6, 80e-6]] } ] }";
+        assertEquals(80e-6 / 4, PresetLoader.parseCatalogue("fabrics.json", denim).get(0).bendingCurve.stiffness(40, Math.PI / 2), 1e-20, "the last sample along v");
+        e = assertThrows(PresetException.class, () -> PresetLoader.parseCatalogue("fabrics.json", denim.replace("[60e-6, 61e-6, 68e-6, 36e-6]", "[60e-6, 61e-6, -68e-6, 36e-6]")));
+        assertEquals("fabrics[0].bendingCurve[1][2]", e.field());
+        e = assertThrows(PresetException.class, () -> PresetLoader.parseCatalogue("fabrics.json", denim.replace(", [108e-6, 113e-6, 121e-6, 80e-6]", "")));
+        assertEquals("fabrics[0].bendingCurve", e.field());
+        assertTrue(e.problem().contains("must be 3 rows"), e.getMessage());
     }
 
     /** README's table of fabrics is the catalogue's, row for row. */

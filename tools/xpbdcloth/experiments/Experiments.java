@@ -32,6 +32,7 @@ public final class Experiments implements Callable<Integer> {
         e.add(new MultigridOnTriangles());
         e.add(new SolverChoice());
         e.add(new MeasuredStretching());
+        e.add(new MeasuredBendingCurve());
         return e;
     }
 

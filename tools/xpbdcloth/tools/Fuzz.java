@@ -343,6 +343,14 @@ public final class Fuzz implements Callable<Integer> {
                 xpbdcloth.fabric.StretchingCurve curve = catalogue.get(own.nextInt(catalogue.size())).stretchingCurve;
                 if (curve != null) sim.add(new xpbdcloth.fabric.MeasuredStiffening(sim.blocks(), curve));
             }
+            // Dihedral hinges following a measured bending curve in one of two such cases, from the same stream.
+            boolean fabricHinges = false;
+            for (xpbdcloth.engine.ConstraintBlock b : sim.blocks())
+                fabricHinges |= b instanceof xpbdcloth.engine.DihedralBlock && b.family() == xpbdcloth.engine.ConstraintFamily.DIHEDRAL;
+            if (fabricHinges && own.nextBoolean()) {
+                java.util.List<xpbdcloth.fabric.Fabric> catalogue = xpbdcloth.scene.FabricCatalogue.all();
+                sim.add(new xpbdcloth.fabric.MeasuredBending(sim.blocks(), cloth.particles(), triangles, warp, catalogue.get(own.nextInt(catalogue.size())).bendingCurve));
+            }
         }
         if (area && r.nextInt(4) == 0) {
             xpbdcloth.engine.Aerodynamics air = new xpbdcloth.engine.Aerodynamics(triangles, logUniform(r, 1e-3, 1e3), 10 * r.nextDouble(), 10 * r.nextDouble());
