@@ -374,6 +374,40 @@ public final class Simulation {
     /** The substep h of the step in progress (or of the last step), seconds. */
     public double substep() { return ctx.h; }
 
+    /**
+     * Continues another simulation of the same scene whose particles this one maps (a cloth cut where it tore:
+     * particle i here is particle {@code source[i]} there, a split vertex's copies both its original): the
+     * particles' positions, previous positions, velocities and pending forces, each sphere's state, the clock
+     * and the step count, which is all a step carries over ({@link StepSnapshot}). The spheres must be the
+     * same in number; masses, pins and constraints are this simulation's own.
+     */
+    public void continueFrom(Simulation before, int[] source) {
+        if (before == null || source == null) throw new IllegalArgumentException("before and source must not be null");
+        if (source.length != particles.count())
+            throw new IllegalArgumentException("source must map each of the " + particles.count() + " particles, was " + source.length);
+        if (before.spheres.size() != spheres.size())
+            throw new IllegalArgumentException("spheres must be the same (" + spheres.size() + "), before had " + before.spheres.size());
+        Particles from = before.particles;
+        for (int i = 0; i < source.length; i++) {
+            int j = 3 * Check.index("source", source[i], from.count()), o = 3 * i;
+            for (int k = 0; k < 3; k++) {
+                particles.x[o + k] = from.x[j + k];
+                particles.prev[o + k] = from.prev[j + k];
+                particles.v[o + k] = from.v[j + k];
+                particles.force[o + k] = from.force[j + k];
+            }
+        }
+        for (int k = 0; k < spheres.size(); k++) {
+            Sphere s = spheres.get(k), b = before.spheres.get(k);
+            s.cx = b.cx; s.cy = b.cy; s.cz = b.cz;
+            s.vx = b.vx; s.vy = b.vy; s.vz = b.vz;
+            s.spinAngle = b.spinAngle;
+        }
+        time = before.time;
+        stepCount = before.stepCount;
+        for (RigidCollider s : solids) s.moveTo(time);
+    }
+
     /** Places every sphere, box and capsule at its path's start and sets the clock to 0 (scene reset). */
     public void resetClock() {
         time = 0;

@@ -68,6 +68,8 @@ public final class Limits {
     public static final Range BENDING_STIFFNESS = new Range(1e-6, 1, "N·m");
     /** A crease's yield: from a 10 m bend (barely one) to a 0.1 mm radius. */
     public static final Range YIELD_CURVATURE = new Range(0.1, 1e4, "1/m");
+    /** The edge strain past which a fabric tears: from a tenth of a per cent to elevenfold. */
+    public static final Range BREAKING_STRAIN = new Range(1e-3, 10, "");
     /** How fast a yielded hinge's rest follows: an hour's creep to instant. */
     public static final Range PLASTIC_RATE = new Range(1e-4, 1e4, "1/s");
     /** Poisson's ratio ν₁₂ before the positive-definite check. */

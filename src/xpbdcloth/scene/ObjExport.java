@@ -74,18 +74,22 @@ public final class ObjExport {
 
     /** The same with a frame every {@code steps} steps of the preset's dt. */
     public static int recordSequence(Preset preset, int frames, Path folder, int steps) throws IOException {
-        return recordSequence(Scene.of(preset), frames, folder, steps);
+        recordSequence(Scene.of(preset), frames, folder, steps);
+        return frames;
     }
 
-    /** The same from a scene already built (the caller keeps it, to ask how its last step went). */
-    public static int recordSequence(Scene scene, int frames, Path folder, int steps) throws IOException {
+    /**
+     * The same from a scene already built; returns the scene it ended with, to ask how its last step went (a
+     * cloth that tears goes on as the cut scene, and each OBJ frame has the topology of its moment).
+     */
+    public static Scene recordSequence(Scene scene, int frames, Path folder, int steps) throws IOException {
         if (frames < 1) throw new IllegalArgumentException("frames must be >= 1, was " + frames);
         if (steps < 1) throw new IllegalArgumentException("steps per frame must be >= 1, was " + steps);
         Files.createDirectories(folder);
         for (int f = 1; f <= frames; f++) {
-            for (int s = 0; s < steps; s++) scene.simulation().step();
+            for (int s = 0; s < steps; s++) scene = scene.step();
             write(frameFile(folder, f), scene);
         }
-        return frames;
+        return scene;
     }
 }

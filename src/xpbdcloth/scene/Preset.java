@@ -51,7 +51,9 @@ public final class Preset {
         this.name = name;
         this.description = description;
         this.cloth = cloth;
-        this.families = Collections.unmodifiableMap(new EnumMap<>(families));
+        EnumMap<ConstraintFamily, Material> own = new EnumMap<>(ConstraintFamily.class);  // EnumMap(Map) refuses an empty map that is not one
+        own.putAll(families);
+        this.families = Collections.unmodifiableMap(own);
         this.solver = solver;
         this.spheres = Collections.unmodifiableList(spheres);
         this.planes = Collections.unmodifiableList(planes);
@@ -125,10 +127,17 @@ public final class Preset {
         public final PlasticitySpec plasticity;
         /** Whether the membrane follows the fabric's measured stretching curve (else it is linear, the curve's slope at zero). */
         public final boolean stiffening;
+        /** The edge strain past which the cloth tears ({@link Tearing}), or NaN: it does not. */
+        public final double breakingStrain;
 
         FabricSpec(xpbdcloth.fabric.Fabric fabric, double[] warp, boolean tethers, PlasticitySpec plasticity, boolean stiffening) {
+            this(fabric, warp, tethers, plasticity, stiffening, Double.NaN);
+        }
+
+        FabricSpec(xpbdcloth.fabric.Fabric fabric, double[] warp, boolean tethers, PlasticitySpec plasticity, boolean stiffening, double breakingStrain) {
             this.fabric = fabric; this.warp = warp == null ? null : warp.clone(); this.tethers = tethers; this.plasticity = plasticity;
             this.stiffening = stiffening;
+            this.breakingStrain = breakingStrain;
         }
     }
 

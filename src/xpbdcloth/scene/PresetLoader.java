@@ -36,7 +36,7 @@ import xpbdcloth.mesh.UsdaReader;
  */
 public final class PresetLoader {
     /** The presets that ship with the project, in the order the sketch offers them. */
-    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth", "table", "arm", "drop-fold", "fabric", "flag-fabric", "drape", "denim-fold", "mannequin-poncho", "mannequin-turn", "torus-spin", "crease", "pillow", "balloon", "skirt", "tshirt", "bordered-tablecloth", "drape-tester");
+    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth", "table", "arm", "drop-fold", "fabric", "flag-fabric", "drape", "denim-fold", "mannequin-poncho", "mannequin-turn", "torus-spin", "crease", "pillow", "balloon", "skirt", "tshirt", "bordered-tablecloth", "drape-tester", "tear", "rip");
 
     private PresetLoader() {}
 
@@ -312,6 +312,11 @@ public final class PresetLoader {
             if (fabric != null && !triangles) throw fail("fabric", "is a membrane of triangles, " + none + ": give the cloth two rows and columns, or spring families");
             if (root.json.has("aerodynamics") && !triangles) throw fail("aerodynamics", "acts on triangles, " + none + ": use wind, which acts on particles");
             Preset.PressureSpec pressure = pressure(optional(root, "pressure"), cloth);
+            if (fabric != null && !Double.isNaN(fabric.breakingStrain)) {
+                if (pressure != null) throw fail("fabric.breakingStrain", "and pressure cannot be given together: a torn cloth no longer holds its gas");
+                if (cloth.garment != null) throw fail("fabric.breakingStrain", "cannot tear a garment (its seams are welded as it is sewn): give it to a cloth or a mesh");
+                if (cloth.isMesh() && cloth.mesh.segmentCount() > 0) throw fail("fabric.breakingStrain", "tears triangles, and " + cloth.meshFile + " has lines too");
+            }
             List<Preset.SphereSpec> spheres = new ArrayList<>();
             Node ss = optional(root, "spheres");
             if (ss != null) for (Node s : array(ss, Limits.MAX_SPHERES)) spheres.add(sphere(s));
@@ -522,7 +527,7 @@ public final class PresetLoader {
         Preset.FabricSpec fabric(Node n) {
             List<String> moduli = List.of("name", "warpModulus", "weftModulus", "poisson", "shearModulus", "bendingStiffness");
             Set<String> allowed = new java.util.HashSet<>(moduli);
-            allowed.addAll(Set.of("catalogue", "warp", "tethers", "plasticity", "stiffening"));
+            allowed.addAll(Set.of("catalogue", "warp", "tethers", "plasticity", "stiffening", "breakingStrain"));
             object(n, allowed);
             Node cat = optional(n, "catalogue");
             Fabric material;
@@ -563,7 +568,12 @@ public final class PresetLoader {
             boolean stiffening = st != null && bool(st);
             if (stiffening && material.stretchingCurve == null)
                 throw fail(st.path, "needs a measured stretching curve: a catalogue fabric, not moduli of your own (they are a linear membrane)");
-            return new Preset.FabricSpec(material, warp, t != null && bool(t), plasticity, stiffening);
+            Node bs = optional(n, "breakingStrain");
+            double breaking = bs == null ? Double.NaN : number(bs, Limits.BREAKING_STRAIN);
+            // A tear rebuilds the cloth from its rest shape, and a yielded crease is a rest shape of its own.
+            if (bs != null && plasticity != null)
+                throw fail(bs.path, "and plasticity cannot be given together: a tear rebuilds the cloth from its rest shape, which would lose the creases");
+            return new Preset.FabricSpec(material, warp, t != null && bool(t), plasticity, stiffening, breaking);
         }
 
         /** The fabric catalogue: a source for all, and per fabric its data-driven sample (see {@link DataDrivenSample}). */

@@ -46,6 +46,8 @@ public final class Scene {
     private MeasuredStiffening stiffening;
     /** The fabric's hinges following its measured bending curve (with stiffening, when the fabric has one), or null. */
     private xpbdcloth.fabric.MeasuredBending measuredBending;
+    /** The edges a fabric with a breaking strain watches ({@link Tearing}), or null: it does not tear. */
+    private xpbdcloth.engine.BreakingEdges breaking;
     /** The gas (or held volume) inside the cloth, or null when the preset fills it with nothing. */
     private EnclosedGas gas;
     /** The gas's nRT as the preset filled it (J), what the gas keys pump around. */
@@ -93,6 +95,10 @@ public final class Scene {
                 simulation.add(stiffening);
             }
             if (measuredBending != null) simulation.add(measuredBending);
+            if (!Double.isNaN(f.breakingStrain)) {
+                breaking = new xpbdcloth.engine.BreakingEdges(cloth.particles(), cloth.triangles(), f.breakingStrain);
+                simulation.add(breaking);
+            }
             for (ConstraintBlock b : simulation.blocks()) bendsByHinges |= b instanceof DihedralBlock;
             fabric = f.fabric;
             noteCut();
@@ -328,6 +334,30 @@ public final class Scene {
         return bendsByHinges ? "dihedral hinges (a bent rest)" : "the plate's on every triangle";
     }
     public Cloth cloth() { return cloth; }
+
+    /** The edges watched for tearing, or null when the fabric has no breaking strain. */
+    public xpbdcloth.engine.BreakingEdges breaking() { return breaking; }
+
+    /** Whether the last step broke an edge, so the scene to go on with is {@link #torn()}. */
+    public boolean tearing() { return breaking != null && breaking.broke(); }
+
+    /**
+     * This scene cut where the last step broke an edge ({@link Tearing}): a new scene, carrying on from this
+     * one's state, which is closed; or this scene itself when nothing broke or no cut could be made.
+     */
+    public Scene torn() { return tearing() ? Tearing.torn(this) : this; }
+
+    /** One step, and the scene to go on with: this one, or this one {@link #torn()} where the step broke an edge. */
+    public Scene step() {
+        simulation.step();
+        return torn();
+    }
+
+    /** A material that follows the cloth's state takes it now (a scene that carries on from another's state). */
+    void followState() {
+        if (stiffening != null) stiffening.afterStep(cloth.particles(), simulation.settings().timestep());
+        if (measuredBending != null) measuredBending.afterStep(cloth.particles(), simulation.settings().timestep());
+    }
     public Simulation simulation() { return simulation; }
     public Wind wind() { return wind; }
     public boolean windOn() { return windOn; }

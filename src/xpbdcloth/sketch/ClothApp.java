@@ -185,6 +185,7 @@ public final class ClothApp {
         int steps = stepsThisFrame(frameSeconds);
         for (int i = 0; i < steps; i++) {
             if (!state.advance()) break;
+            if (grab != null) grab.follow(state);  // the held cloth may have torn into a new scene
             hud.record(state.running());
         }
         long t1 = System.nanoTime();

@@ -15,7 +15,7 @@ public final class Grab {
     @FunctionalInterface
     public interface Projection { void project(double x, double y, double z, double[] out); }
 
-    private final List<Scene> scenes;
+    private final Scene[] scenes;
     private final AttachmentConstraint[] held;
     private final double[][] start;
     /** The particle held. */
@@ -24,19 +24,19 @@ public final class Grab {
     public final double x, y, z, depth;
 
     private Grab(SketchState state, int scene, int particle, double depth) {
-        this.scenes = state.running();
+        this.scenes = state.running().toArray(new Scene[0]);
         this.particle = particle;
         this.depth = depth;
-        Particles p = scenes.get(scene).cloth().particles();
+        Particles p = scenes[scene].cloth().particles();
         x = p.x(particle) + state.offsetX(scene);
         y = p.y(particle);
         z = p.z(particle);
-        held = new AttachmentConstraint[scenes.size()];
-        start = new double[scenes.size()][];
-        for (int s = 0; s < scenes.size(); s++) {
-            Particles q = scenes.get(s).cloth().particles();
+        held = new AttachmentConstraint[scenes.length];
+        start = new double[scenes.length][];
+        for (int s = 0; s < scenes.length; s++) {
+            Particles q = scenes[s].cloth().particles();
             start[s] = new double[] {q.x(particle), q.y(particle), q.z(particle)};
-            held[s] = scenes.get(s).simulation().attach(particle, q.x(particle), q.y(particle), q.z(particle));
+            held[s] = scenes[s].simulation().attach(particle, q.x(particle), q.y(particle), q.z(particle));
         }
     }
 
@@ -61,12 +61,31 @@ public final class Grab {
 
     /** The pointer is over world point (px, py, pz): every held particle moves by its displacement from where it was picked. */
     public void moveTo(double px, double py, double pz) {
-        double dx = px - x, dy = py - y, dz = pz - z;
+        dx = px - x;
+        dy = py - y;
+        dz = pz - z;
         for (int s = 0; s < held.length; s++) held[s].moveTarget(start[s][0] + dx, start[s][1] + dy, start[s][2] + dz);
+    }
+
+    /** The pointer's displacement from where the particle was picked. */
+    private double dx, dy, dz;
+
+    /**
+     * Keeps holding the particle in a scene that replaced the one it was held in (a cloth that tore goes on as
+     * a new scene; its particles keep their indices), at the same target.
+     */
+    public void follow(SketchState state) {
+        List<Scene> running = state.running();
+        if (running.size() != scenes.length) return;
+        for (int s = 0; s < scenes.length; s++)
+            if (running.get(s) != scenes[s]) {
+                scenes[s] = running.get(s);
+                held[s] = scenes[s].simulation().attach(particle, start[s][0] + dx, start[s][1] + dy, start[s][2] + dz);
+            }
     }
 
     /** Lets go in every scene it holds (scenes replaced since are not touched). */
     public void release() {
-        for (int s = 0; s < held.length; s++) scenes.get(s).simulation().release(held[s]);
+        for (int s = 0; s < held.length; s++) scenes[s].simulation().release(held[s]);
     }
 }

@@ -101,7 +101,8 @@ final class Hud {
                         sim.profile().lastPcgIterations() > 0 ? fmt("   CG iterations %d", sim.profile().lastPcgIterations()) : ""),
                 km == null ? (running.get(0).cutFrom() != null ? fmt("fabrics %s   (F: all one fabric)", running.get(0).cutFrom())
                         : fmt("fabric %s%s%s   (F: next fabric)", fabric == null ? "(none)" : fabric.name, fabric == null || fabric.description.isEmpty() ? "" : " — " + fabric.description,
-                        tethered ? ", tethered" : "")) : fmt("family %s", famName),
+                        tethered ? ", tethered" : "") + (Double.isNaN(s.breakingStrain()) ? "" : fmt(", tears past %.1f %% (y)", 100 * s.breakingStrain())))
+                        : fmt("family %s", famName),
                 km == null ? (fabric == null ? "" : cut.size() > 1 ? "  membrane warp / weft / shear N/m: " + eachFabric(cut, f -> fmt("%.0f / %.0f / %.0f", f.membrane.warpModulus, f.membrane.weftModulus, f.membrane.shearModulus))
                         : fmt("  membrane warp %.0f N/m  weft %.0f N/m  ν12 %.2f  shear %.0f N/m", fabric.membrane.warpModulus,
                         fabric.membrane.weftModulus, fabric.membrane.poisson, fabric.membrane.shearModulus))
@@ -268,9 +269,19 @@ final class Hud {
     static {
         List<String> texts = new java.util.ArrayList<>();
         texts.add("keys (h hides this)");
-        for (KeyBinding k : KeyBindings.all()) {
-            String key = k.key == ' ' ? "space" : String.valueOf(k.key);
-            texts.add(key + "       ".substring(key.length()) + k.help);
+        List<KeyBinding> all = KeyBindings.all();
+        for (int i = 0; i < all.size(); i++) {
+            KeyBinding k = all.get(i);
+            String key = k.key == ' ' ? "space" : String.valueOf(k.key), help = k.help;
+            // A key and its capital that do the same thing both ways share a line: "i/I  iterations +1 / -1".
+            KeyBinding next = i + 1 < all.size() ? all.get(i + 1) : null;
+            String shared = next == null || next.key != Character.toUpperCase(k.key) || next.key == k.key ? "" : sharedWords(k.help, next.help);
+            if (!shared.isEmpty()) {
+                key += "/" + next.key;
+                help = k.help + " / " + next.help.substring(shared.length());
+                i++;
+            }
+            texts.add(key + "       ".substring(key.length()) + help);
         }
         texts.add("");
         texts.add("mouse");
@@ -279,6 +290,14 @@ final class Hud {
         HELP_HEADINGS = new boolean[HELP_TEXTS.length];
         HELP_HEADINGS[0] = true;
         HELP_HEADINGS[texts.indexOf("mouse")] = true;
+    }
+
+    /** The whole words two help texts begin with alike ("iterations " of "iterations +1" and "iterations -1"), or "". */
+    static String sharedWords(String a, String b) {
+        int end = 0;
+        for (int i = 0; i < Math.min(a.length(), b.length()) && a.charAt(i) == b.charAt(i); i++)
+            if (a.charAt(i) == ' ') end = i + 1;
+        return a.substring(0, end);
     }
 
     /** The keys and mouse controls, in the columns the layout chose, long lines wrapped. */

@@ -54,6 +54,7 @@ public final class KeyBindings {
         b.add(new KeyBinding('F', "fabric: the next measured one (no reset)", SketchState::cycleFabric, s -> s.fabric() == null ? null : s.fabric().name));
         b.add(new KeyBinding('j', "gas in x1.25 (pillow, balloon)", s -> s.inflate(1), SketchState::gasAmount));
         b.add(new KeyBinding('J', "gas out /1.25", s -> s.inflate(-1), SketchState::gasAmount));
+        b.add(new KeyBinding('y', "breaking strain: x1, x1.5, x2, x0.5, x0.75 the preset's (tear, rip)", SketchState::cycleBreakingStrain, SketchState::breakingStrain));
         b.add(new KeyBinding('b', "side by side: PBD left, XPBD right", SketchState::toggleSideBySide, SketchState::sideBySide));
         // Ten scenes have keys; the others load with --scene or 'l'.
         for (int i = 0; i < Math.min(10, xpbdcloth.scene.PresetLoader.BUILT_IN.size()); i++) {

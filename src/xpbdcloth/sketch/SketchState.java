@@ -296,6 +296,34 @@ public final class SketchState {
         else say(String.format(java.util.Locale.ROOT, "held volume %.4g L (%.2f × rest)", 1000 * gas.targetVolume(), gas.targetVolume() / gas.restVolume()));
     }
 
+    /** The breaking strain's multiples of the preset's that the y key steps through. */
+    static final double[] BREAKING_FACTORS = {1, 1.5, 2, 0.5, 0.75};
+
+    /**
+     * Steps the running cloths' breaking strain to the next of {@link #BREAKING_FACTORS} times the preset's,
+     * live: edges are checked against it from the next step. A cloth whose fabric has no breaking strain says so.
+     */
+    public void cycleBreakingStrain() {
+        xpbdcloth.engine.BreakingEdges first = running().get(0).breaking();
+        if (first == null) {
+            error("this cloth does not tear: y works on a fabric with a \"breakingStrain\" (tear, rip)");
+            return;
+        }
+        double own = preset.fabric.breakingStrain;
+        int now = 0;
+        for (int k = 0; k < BREAKING_FACTORS.length; k++)
+            if (Math.abs(first.breakingStrain() - BREAKING_FACTORS[k] * own) < 1e-9 * own) now = k;
+        double next = Math.max(Limits.BREAKING_STRAIN.lo, Math.min(Limits.BREAKING_STRAIN.hi, BREAKING_FACTORS[(now + 1) % BREAKING_FACTORS.length] * own));
+        for (Scene s : running()) if (s.breaking() != null) s.breaking().setBreakingStrain(next);
+        say(String.format(java.util.Locale.ROOT, "breaking strain %.3g: an edge stretched %.1f %% tears", next, 100 * next));
+    }
+
+    /** The running cloth's breaking strain; NaN for a cloth that does not tear. */
+    public double breakingStrain() {
+        xpbdcloth.engine.BreakingEdges b = running().get(0).breaking();
+        return b == null ? Double.NaN : b.breakingStrain();
+    }
+
     /** The gas's nRT (J), or the held volume (m³); NaN for a cloth that encloses nothing. */
     public double gasAmount() {
         xpbdcloth.engine.EnclosedGas gas = running().get(0).gas();
@@ -466,8 +494,19 @@ public final class SketchState {
     public boolean advance() {
         if (paused && pendingSteps == 0) return false;
         if (pendingSteps > 0) pendingSteps--;
+        boolean tore = false;
         try {
-            for (Scene s : running()) s.simulation().step();
+            // A scene whose cloth tore goes on as the scene cut there (Scene.step): same state, new topology.
+            if (sideBySide) {
+                Scene l = left.step(), r = right.step();
+                tore = l != left || r != right;
+                left = l;
+                right = r;
+            } else {
+                Scene m = main.step();
+                tore = m != main;
+                main = m;
+            }
         } catch (RuntimeException e) {
             // The engine has already put the scene back as it was before the step (a SimulationDivergedException,
             // whatever the step threw); anything else still must not close the sketch: stop there and say why.
@@ -476,15 +515,23 @@ public final class SketchState {
             error("paused: " + e.getMessage());
             return false;
         }
+        if (tore) {
+            applyAll();
+            tears++;
+        }
         warnIfTearing();
         try {
-            String ended = usd.afterStep(running().get(0));
+            String ended = tore && usd.on() ? usd.stop("the cloth tore, and a recording holds one topology") : usd.afterStep(running().get(0));
             if (ended != null) say(ended);
         } catch (java.io.IOException | RuntimeException e) {
             usdFailed(e);
         }
         return true;
     }
+
+    /** How many times a running cloth has torn since the sketch started (a grab follows the torn scene). */
+    public int tears() { return tears; }
+    private int tears;
 
     /** Whether the R key asked for a USD recording to start or stop since the last call (and clears the request). */
     public boolean takeUsdRequest() {
@@ -553,6 +600,7 @@ public final class SketchState {
         if (tearingSaid || ++stepsSinceTearCheck < 30) return;
         stepsSinceTearCheck = 0;
         for (Scene s : running()) {
+            if (s.breaking() != null) continue; // it is meant to tear, and does, at its breaking strain
             double strain = xpbdcloth.engine.Metrics.maxClothStrain(s.simulation());
             if (strain > TEARING_STRAIN) {
                 tearingSaid = true;

@@ -122,14 +122,21 @@ public final class UsdRecording implements Closeable {
         return record(Scene.of(preset), frames, file, stepsPerFrame);
     }
 
-    /** The same from a scene already built (the caller keeps it, to ask how its last step went). */
+    /**
+     * The same from a scene already built (the caller keeps it, to ask how its last step went). A stage holds
+     * one topology: a cloth that tears ends the recording at the frame before its first tear (fewer time codes
+     * than asked; the file is written all the same).
+     */
     public static int record(Scene scene, int frames, Path file, int stepsPerFrame) throws IOException {
         if (frames < 1 || frames >= MAX_FRAMES)
             throw new IllegalArgumentException("frames must be in [1, " + (MAX_FRAMES - 1) + "] for a USD recording, was " + frames);
         if (stepsPerFrame < 1) throw new IllegalArgumentException("steps per frame must be >= 1, was " + stepsPerFrame);
         try (UsdRecording r = start(file, scene, 1 / (stepsPerFrame * scene.simulation().settings().timestep()))) {
             for (int f = 1; f <= frames; f++) {
-                for (int s = 0; s < stepsPerFrame; s++) scene.simulation().step();
+                for (int s = 0; s < stepsPerFrame; s++) {
+                    scene.simulation().step();
+                    if (scene.tearing()) return r.frames();
+                }
                 r.frame();
             }
             return r.frames();

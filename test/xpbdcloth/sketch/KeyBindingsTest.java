@@ -30,6 +30,7 @@ class KeyBindingsTest {
             if (b.key == '1') s.selectScene(1); // '1' selects hanging, which is already running
             if (b.key == 'F') s.selectScene(PresetLoader.BUILT_IN.indexOf("fabric")); // the fabric key needs a fabric
             if (b.key == 'j' || b.key == 'J') s.selectScene(PresetLoader.BUILT_IN.indexOf("balloon")); // the gas keys need a gas
+            if (b.key == 'y') s.selectScene(PresetLoader.BUILT_IN.indexOf("tear")); // the breaking strain needs a cloth that tears
             Object before = b.observe(s);
             b.press(s);
             Object after = b.observe(s);

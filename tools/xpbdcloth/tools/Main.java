@@ -182,8 +182,9 @@ public final class Main implements Callable<Integer> {
             long t0 = System.nanoTime();
             xpbdcloth.scene.Scene scene = xpbdcloth.scene.Scene.of(preset);
             int n = xpbdcloth.usd.UsdRecording.record(scene, frames, usd.toPath(), steps);
-            System.out.printf(java.util.Locale.ROOT, "wrote %s: %d time codes (0 is the start), %.1f MB, in %.1f s%n",
-                    usd, n, java.nio.file.Files.size(usd.toPath()) / 1e6, (System.nanoTime() - t0) / 1e9);
+            System.out.printf(java.util.Locale.ROOT, "wrote %s: %d time codes (0 is the start), %.1f MB, in %.1f s%s%n",
+                    usd, n, java.nio.file.Files.size(usd.toPath()) / 1e6, (System.nanoTime() - t0) / 1e9,
+                    n < frames + 1 ? " (ended where the cloth tore: a USD stage holds one topology; --obj writes each frame's)" : "");
             System.out.println("last step: " + xpbdcloth.engine.StepBalance.verdict(scene.simulation().balance()));
             return 0;
         }
@@ -209,9 +210,10 @@ public final class Main implements Callable<Integer> {
             int steps = announce(preset, "OBJ frames", obj);
             long t0 = System.nanoTime();
             xpbdcloth.scene.Scene scene = xpbdcloth.scene.Scene.of(preset);
-            int n = xpbdcloth.scene.ObjExport.recordSequence(scene, frames, obj.toPath(), steps);
-            System.out.printf(java.util.Locale.ROOT, "wrote %d OBJ frames (%d vertices each; import at %.6g fps to play in real time) in %.1f s%n",
-                    n, preset.cloth.isMesh() ? preset.cloth.mesh.vertexCount() : preset.cloth.columns * preset.cloth.rows, 1 / (steps * preset.solver.timestep()), (System.nanoTime() - t0) / 1e9);
+            scene = xpbdcloth.scene.ObjExport.recordSequence(scene, frames, obj.toPath(), steps);
+            int first = preset.cloth.isMesh() ? preset.cloth.mesh.vertexCount() : preset.cloth.columns * preset.cloth.rows, last = scene.cloth().particles().count();
+            System.out.printf(java.util.Locale.ROOT, "wrote %d OBJ frames (%s; import at %.6g fps to play in real time) in %.1f s%n", frames,
+                    first == last ? first + " vertices each" : first + " vertices, " + last + " by the end: the cloth tore", 1 / (steps * preset.solver.timestep()), (System.nanoTime() - t0) / 1e9);
             System.out.println("last step: " + xpbdcloth.engine.StepBalance.verdict(scene.simulation().balance()));
             return 0;
         }

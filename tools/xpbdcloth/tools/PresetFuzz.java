@@ -22,7 +22,7 @@ import xpbdcloth.scene.Scene;
  * filled by a pressure block: a gas by its gauge or its amount, in air or a vacuum, or a held volume; the skirt's,
  * the T-shirt's or the two-fabric tablecloth's pattern sewn as a garment at a coarse edge, its sewing drawn), spring
  * families or a fabric (its moduli or a catalogue name, warp, tethers, plasticity, a catalogue fabric's
- * stiffening), every solver, spheres and colliders of every kind, pin motions (moves and turns), wind,
+ * stiffening, a breaking strain), every solver, spheres and colliders of every kind, pin motions (moves and turns), wind,
  * aerodynamics and self-collision.
  *
  * <p>What is not drawn jointly: a case's work (particles × iterations × substeps × steps) is held under
@@ -85,9 +85,10 @@ final class PresetFuzz {
             }
         }
         try {
-            Simulation sim = Scene.of(PresetLoader.parse("fuzz.json", text)).simulation();
-            for (int s = 0; s < c.steps; s++) sim.step();
-            return Metrics.allFinite(sim.particles()) ? null : "preset seed " + seed + ": non-finite";
+            // Stepped as a scene: a cloth that tears goes on torn.
+            Scene scene = Scene.of(PresetLoader.parse("fuzz.json", text));
+            for (int s = 0; s < c.steps; s++) scene = scene.step();
+            return Metrics.allFinite(scene.simulation().particles()) ? null : "preset seed " + seed + ": non-finite";
         } catch (SimulationDivergedException e) {
             return "preset seed " + seed + ": diverged: " + e.getMessage() + "\n" + text;
         } catch (RuntimeException | Error e) {
@@ -264,9 +265,15 @@ final class PresetFuzz {
                 Random own = new Random(json.toString().hashCode());
                 // A catalogue fabric follows its measured stretching curve in one case of two.
                 if (catalogue && own.nextBoolean()) json.append(", \"stiffening\": true");
-                if (own.nextBoolean())
+                boolean yielding = own.nextBoolean();
+                if (yielding)
                     json.append(", \"plasticity\": { \"yieldCurvature\": ").append(num(logUniform(own, Limits.YIELD_CURVATURE)))
                         .append(", \"rate\": ").append(num(logUniform(own, Limits.PLASTIC_RATE))).append(" }");
+                // A breaking strain in one of two fabrics that may tear (not a yielding one, a garment or a gas's), from a
+                // stream of its own again.
+                Random tears = new Random(json.toString().hashCode() * 31L + 7);
+                if (!yielding && !garment && closed < 0 && tears.nextBoolean())
+                    json.append(", \"breakingStrain\": ").append(num(logUniform(tears, Limits.BREAKING_STRAIN)));
                 json.append(" }");
             }
             boolean springs = !fabric || r.nextBoolean(); // a fabric needs no families; given, they are whole
