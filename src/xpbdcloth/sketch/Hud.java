@@ -273,12 +273,12 @@ final class Hud {
         for (int i = 0; i < all.size(); i++) {
             KeyBinding k = all.get(i);
             String key = k.key == ' ' ? "space" : String.valueOf(k.key), help = k.help;
-            // A key and its capital that do the same thing both ways share a line: "i/I  iterations +1 / -1".
+            // A key and its capital that do the same thing both ways share a line: "i/I  iterations +1; -1".
             KeyBinding next = i + 1 < all.size() ? all.get(i + 1) : null;
             String shared = next == null || next.key != Character.toUpperCase(k.key) || next.key == k.key ? "" : sharedWords(k.help, next.help);
             if (!shared.isEmpty()) {
                 key += "/" + next.key;
-                help = k.help + " / " + next.help.substring(shared.length());
+                help = k.help + "; " + next.help.substring(shared.length());
                 i++;
             }
             texts.add(key + "       ".substring(key.length()) + help);
