@@ -515,10 +515,7 @@ public final class SketchState {
             error("paused: " + e.getMessage());
             return false;
         }
-        if (tore) {
-            applyAll();
-            tears++;
-        }
+        if (tore) applyAll();  // the keys' settings, materials, wind and contacts on the cut scene too
         warnIfTearing();
         try {
             String ended = tore && usd.on() ? usd.stop("the cloth tore, and a recording holds one topology") : usd.afterStep(running().get(0));
@@ -528,10 +525,6 @@ public final class SketchState {
         }
         return true;
     }
-
-    /** How many times a running cloth has torn since the sketch started (a grab follows the torn scene). */
-    public int tears() { return tears; }
-    private int tears;
 
     /** Whether the R key asked for a USD recording to start or stop since the last call (and clears the request). */
     public boolean takeUsdRequest() {
