@@ -76,7 +76,4 @@ public final class BreakingEdges implements AfterStep {
 
     /** The largest edge strain the last step left. */
     public double largestStrain() { return largestStrain; }
-
-    /** The number of edges watched. */
-    public int edgeCount() { return restLength.length; }
 }

@@ -41,13 +41,6 @@ public final class VertexSplit {
         return far > 0 && far < around;
     }
 
-    /** Whether some triangle has both a and b as corners. */
-    public static boolean joined(int[] triangles, int a, int b) {
-        for (int t = 0; t < triangles.length; t += 3)
-            if (cornerOf(triangles, t, a) >= 0 && cornerOf(triangles, t, b) >= 0) return true;
-        return false;
-    }
-
     private static int cornerOf(int[] triangles, int t, int vertex) {
         for (int k = 0; k < 3; k++) if (triangles[t + k] == vertex) return k;
         return -1;

@@ -133,10 +133,8 @@ public final class UsdRecording implements Closeable {
         if (stepsPerFrame < 1) throw new IllegalArgumentException("steps per frame must be >= 1, was " + stepsPerFrame);
         try (UsdRecording r = start(file, scene, 1 / (stepsPerFrame * scene.simulation().settings().timestep()))) {
             for (int f = 1; f <= frames; f++) {
-                for (int s = 0; s < stepsPerFrame; s++) {
-                    scene.simulation().step();
-                    if (scene.tearing()) return r.frames();
-                }
+                for (int s = 0; s < stepsPerFrame; s++)
+                    if (scene.step() != scene) return r.frames();  // torn: the cut cloth is another topology
                 r.frame();
             }
             return r.frames();
