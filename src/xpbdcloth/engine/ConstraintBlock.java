@@ -167,6 +167,13 @@ public abstract class ConstraintBlock {
     /** Projects units order[from..to−1] (the coloured order). */
     abstract void projectListed(int[] order, int from, int to, Particles p, SolverContext ctx);
 
+    /**
+     * The coloured sweep's order of this block's units (all of them, colour by colour), told once when a
+     * coloured order is made and before any sweep in it, so a block may keep its rows' data in that order;
+     * {@link #projectListed} then gets this very array.
+     */
+    void sweepOrder(int[] order) { }
+
     /** A view of constraint i. */
     abstract Constraint view(int i);
 

@@ -50,7 +50,8 @@ final class SweepOrder {
         List<ConstraintBlock> b = new ArrayList<>();
         List<int[]> l = new ArrayList<>(), range = new ArrayList<>();
         List<Integer> phases = new ArrayList<>(List.of(0));
-        for (Colouring part : parts)
+        for (Colouring part : parts) {
+            for (int k = 0; k < part.blocks.size(); k++) part.blocks.get(k).sweepOrder(part.order[k]);
             for (int c = 0; c < part.colours; c++) {
                 for (int k = 0; k < part.blocks.size(); k++) {
                     int lo = part.start[k][c], hi = part.start[k][c + 1];
@@ -61,6 +62,7 @@ final class SweepOrder {
                 }
                 phases.add(b.size());
             }
+        }
         return new SweepOrder(b, l, range, phases);
     }
 
