@@ -269,19 +269,9 @@ final class Hud {
     static {
         List<String> texts = new java.util.ArrayList<>();
         texts.add("keys (h hides this)");
-        List<KeyBinding> all = KeyBindings.all();
-        for (int i = 0; i < all.size(); i++) {
-            KeyBinding k = all.get(i);
-            String key = k.key == ' ' ? "space" : String.valueOf(k.key), help = k.help;
-            // A key and its capital that do the same thing both ways share a line: "i/I  iterations +1; -1".
-            KeyBinding next = i + 1 < all.size() ? all.get(i + 1) : null;
-            String shared = next == null || next.key != Character.toUpperCase(k.key) || next.key == k.key ? "" : sharedWords(k.help, next.help);
-            if (!shared.isEmpty()) {
-                key += "/" + next.key;
-                help = k.help + "; " + next.help.substring(shared.length());
-                i++;
-            }
-            texts.add(key + "       ".substring(key.length()) + help);
+        for (KeyBindings.HelpLine line : KeyBindings.helpLines()) {
+            String key = line.keyLabel();
+            texts.add(key + "       ".substring(key.length()) + line.help);
         }
         texts.add("");
         texts.add("mouse");
@@ -290,14 +280,6 @@ final class Hud {
         HELP_HEADINGS = new boolean[HELP_TEXTS.length];
         HELP_HEADINGS[0] = true;
         HELP_HEADINGS[texts.indexOf("mouse")] = true;
-    }
-
-    /** The whole words two help texts begin with alike ("iterations " of "iterations +1" and "iterations -1"), or "". */
-    static String sharedWords(String a, String b) {
-        int end = 0;
-        for (int i = 0; i < Math.min(a.length(), b.length()) && a.charAt(i) == b.charAt(i); i++)
-            if (a.charAt(i) == ' ') end = i + 1;
-        return a.substring(0, end);
     }
 
     /** The keys and mouse controls, in the columns the layout chose, long lines wrapped. */

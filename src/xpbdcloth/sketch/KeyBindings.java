@@ -23,6 +23,50 @@ public final class KeyBindings {
         return null;
     }
 
+    /**
+     * The table as the help and the README list it: a key and its capital that do the same thing both ways
+     * share a line ("i/I", "iterations +1; -1"); every other key is a line of its own.
+     */
+    public static List<HelpLine> helpLines() {
+        List<HelpLine> lines = new ArrayList<>();
+        for (int i = 0; i < ALL.size(); i++) {
+            KeyBinding k = ALL.get(i), next = i + 1 < ALL.size() ? ALL.get(i + 1) : null;
+            String shared = next == null || next.key != Character.toUpperCase(k.key) || next.key == k.key ? "" : sharedWords(k.help, next.help);
+            if (shared.isEmpty()) lines.add(new HelpLine(List.of(k.key), k.help));
+            else {
+                lines.add(new HelpLine(List.of(k.key, next.key), k.help + "; " + next.help.substring(shared.length())));
+                i++;
+            }
+        }
+        return Collections.unmodifiableList(lines);
+    }
+
+    /** One line of the key help: its keys (one, or a key and its capital) and what they do. */
+    public static final class HelpLine {
+        public final List<Character> keys;
+        public final String help;
+
+        HelpLine(List<Character> keys, String help) {
+            this.keys = keys;
+            this.help = help;
+        }
+
+        /** The keys as the help overlay writes them: "i/I", "space". */
+        public String keyLabel() {
+            StringBuilder b = new StringBuilder();
+            for (char k : keys) b.append(b.length() == 0 ? "" : "/").append(k == ' ' ? "space" : String.valueOf(k));
+            return b.toString();
+        }
+    }
+
+    /** The whole words two help texts begin with alike ("iterations " of "iterations +1" and "iterations -1"), or "". */
+    static String sharedWords(String a, String b) {
+        int end = 0;
+        for (int i = 0; i < Math.min(a.length(), b.length()) && a.charAt(i) == b.charAt(i); i++)
+            if (a.charAt(i) == ' ') end = i + 1;
+        return a.substring(0, end);
+    }
+
     /** The key of built-in scene i: 1–9, then 0 for the tenth. */
     public static char sceneKey(int i) {
         if (i < 0 || i > 9) throw new IllegalArgumentException("scene index must be in [0, 9] to have a key, was " + i);
