@@ -497,10 +497,14 @@ public final class SketchState {
         boolean tore = false;
         try {
             // A scene whose cloth tore goes on as the scene cut there (Scene.step): same state, new topology.
+            // Each side's scene is kept as soon as its step returns: a torn scene's old simulation is closed, so
+            // if the other side's step then throws, the sketch must already hold the cut one.
             if (sideBySide) {
-                Scene l = left.step(), r = right.step();
-                tore = l != left || r != right;
+                Scene l = left.step();
+                tore = l != left;
                 left = l;
+                Scene r = right.step();
+                tore |= r != right;
                 right = r;
             } else {
                 Scene m = main.step();
@@ -512,6 +516,7 @@ public final class SketchState {
             // whatever the step threw); anything else still must not close the sketch: stop there and say why.
             paused = true;
             pendingSteps = 0;
+            if (tore) applyAll();
             error("paused: " + e.getMessage());
             return false;
         }

@@ -138,4 +138,32 @@ class SketchRefusalsTest {
         assertEquals(before, s.time(), 0.0, "the clock is where it was");
         assertTrue(Metrics.allFinite(s.first().particles()), "the scene is kept, finite");
     }
+
+    /**
+     * Side by side, the left scene tears in the frame where the right one's step throws: the sketch goes on
+     * with the left's cut scene (its old simulation is closed by the tear), the right one as it was.
+     */
+    @Test
+    void aSideThatToreIsKeptWhenTheOtherSideThrowsInTheSameFrame() {
+        SketchState probe = new SketchState(PresetLoader.builtIn("tear"));
+        probe.toggleSideBySide();
+        int whole = probe.first().particles().count(), tearFrame = -1;
+        for (int i = 0; i < 300 && tearFrame < 0; i++) {
+            assertTrue(probe.advance());
+            if (probe.first().particles().count() > whole) tearFrame = i;
+        }
+        assertTrue(tearFrame >= 0, "the left side tears within 6 s");
+        SketchState s = new SketchState(PresetLoader.builtIn("tear"));
+        s.toggleSideBySide();
+        for (int i = 0; i < tearFrame; i++) assertTrue(s.advance());
+        Scene rightBefore = s.running().get(1);
+        double rightTime = rightBefore.simulation().time();
+        rightBefore.simulation().add((Kinematics) (p, t) -> p.positions()[0] = Double.NaN);
+        assertFalse(s.advance(), "the right side's step threw");
+        assertTrue(s.paused);
+        assertTrue(s.first().particles().count() > whole, "the left side goes on as its cut scene");
+        assertSame(rightBefore, s.running().get(1));
+        assertEquals(rightTime, rightBefore.simulation().time(), 0.0, "the right side is where it was");
+        assertTrue(Metrics.allFinite(s.first().particles()) && Metrics.allFinite(rightBefore.simulation().particles()));
+    }
 }
