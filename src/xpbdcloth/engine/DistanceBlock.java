@@ -21,6 +21,10 @@ public final class DistanceBlock extends ConstraintBlock implements LinearLength
 
     /** L per constraint, m. */
     double[] rest;
+    /** The coloured order {@link #sweepOrder} was told (null before any), and its constraints' ends and L in it. */
+    private int[] sweepOrdered, sweepParticles;
+    private double[] sweepRest;
+    private int sweepOrderedUnits = -1;
 
     public DistanceBlock(ConstraintFamily family, int capacity) {
         super(family, 2, capacity);
@@ -108,8 +112,32 @@ public final class DistanceBlock extends ConstraintBlock implements LinearLength
     }
 
     @Override void projectListed(int[] order, int from, int to, Particles p, SolverContext ctx) {
-        if (uniformXpbd(ctx)) { final double alphaTilde = compliance(0) * ctx.inverseH2; for (int k = from; k < to; k++) projectXpbd(order[k], p, alphaTilde); }
-        else for (int k = from; k < to; k++) project(order[k], p, ctx);
+        if (order != sweepOrdered || sweepOrderedUnits != count) {
+            if (uniformXpbd(ctx)) { final double alphaTilde = compliance(0) * ctx.inverseH2; for (int k = from; k < to; k++) projectXpbd(order[k], p, alphaTilde); }
+            else for (int k = from; k < to; k++) project(order[k], p, ctx);
+        } else if (uniformXpbd(ctx)) {
+            final double alphaTilde = compliance(0) * ctx.inverseH2;
+            for (int k = from; k < to; k++) projectXpbd(order[k], sweepParticles[2 * k], sweepParticles[2 * k + 1], sweepRest[k], p, alphaTilde);
+        } else for (int k = from; k < to; k++) projectPair(this, order[k], sweepParticles[2 * k], sweepParticles[2 * k + 1], sweepRest[k], p, ctx);
+    }
+
+    /**
+     * The constraints' ends and rest lengths copied into the coloured sweep's order, which then reads them in
+     * order rather than from wherever each constraint lies (as {@link QuadraticBendBlock#sweepOrder} does).
+     */
+    @Override void sweepOrder(int[] order) {
+        if (order == sweepOrdered && sweepOrderedUnits == count) return; // a grab recolours the attachments alone
+        int[] q = new int[2 * order.length];
+        double[] r = new double[order.length];
+        for (int k = 0; k < order.length; k++) {
+            q[2 * k] = particles[2 * order[k]];
+            q[2 * k + 1] = particles[2 * order[k] + 1];
+            r[k] = rest[order[k]];
+        }
+        sweepParticles = q;
+        sweepRest = r;
+        sweepOrderedUnits = order.length;
+        sweepOrdered = order;
     }
 
     /**
@@ -117,9 +145,10 @@ public final class DistanceBlock extends ConstraintBlock implements LinearLength
      * once per range instead of per constraint): Δλ = (−C − α̃λ)/(w₀ + w₁ + α̃) and the move Δλ·d/|d| taken as one
      * quotient, (−C − α̃λ)/((w₀ + w₁ + α̃)|d|), so a projection divides once.
      */
-    private void projectXpbd(int i, Particles p, double alphaTilde) {
+    private void projectXpbd(int i, Particles p, double alphaTilde) { projectXpbd(i, particles[2 * i], particles[2 * i + 1], rest[i], p, alphaTilde); }
+
+    private void projectXpbd(int i, int a, int b, double restLength, Particles p, double alphaTilde) {
         final double[] x = p.x, w = p.w;
-        final int a = particles[2 * i], b = particles[2 * i + 1];
         final int ia = 3 * a, ib = 3 * b;
         final double w0 = w[a], w1 = w[b];
         double dx = x[ia] - x[ib], dy = x[ia + 1] - x[ib + 1], dz = x[ia + 2] - x[ib + 2];
@@ -127,7 +156,7 @@ public final class DistanceBlock extends ConstraintBlock implements LinearLength
         if (len < MIN_LENGTH) return;
         double denominator = w0 + w1 + alphaTilde;
         if (denominator <= 0) return;
-        double numerator = -(len - rest[i]) - alphaTilde * lambda[i];
+        double numerator = -(len - restLength) - alphaTilde * lambda[i];
         double s = numerator / (denominator * len);
         lambda[i] += s * len;
         double s0 = w0 * s, s1 = w1 * s;
