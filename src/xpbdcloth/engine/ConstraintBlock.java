@@ -174,6 +174,20 @@ public abstract class ConstraintBlock {
      */
     void sweepOrder(int[] order) { }
 
+    /** a[stride·order[k] + j] for every k and every j &lt; width, in that order: per-unit data laid out in a sweep's order. */
+    static int[] inOrder(int[] a, int stride, int width, int[] order) {
+        int[] out = new int[width * order.length];
+        for (int k = 0; k < order.length; k++) System.arraycopy(a, stride * order[k], out, width * k, width);
+        return out;
+    }
+
+    /** The same for a double array. */
+    static double[] inOrder(double[] a, int stride, int width, int[] order) {
+        double[] out = new double[width * order.length];
+        for (int k = 0; k < order.length; k++) System.arraycopy(a, stride * order[k], out, width * k, width);
+        return out;
+    }
+
     /** A view of constraint i. */
     abstract Constraint view(int i);
 

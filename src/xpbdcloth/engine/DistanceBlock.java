@@ -127,15 +127,8 @@ public final class DistanceBlock extends ConstraintBlock implements LinearLength
      */
     @Override void sweepOrder(int[] order) {
         if (order == sweepOrdered && sweepOrderedUnits == count) return; // a grab recolours the attachments alone
-        int[] q = new int[2 * order.length];
-        double[] r = new double[order.length];
-        for (int k = 0; k < order.length; k++) {
-            q[2 * k] = particles[2 * order[k]];
-            q[2 * k + 1] = particles[2 * order[k] + 1];
-            r[k] = rest[order[k]];
-        }
-        sweepParticles = q;
-        sweepRest = r;
+        sweepParticles = inOrder(particles, 2, 2, order);
+        sweepRest = inOrder(rest, 1, 1, order);
         sweepOrderedUnits = order.length;
         sweepOrdered = order;
     }

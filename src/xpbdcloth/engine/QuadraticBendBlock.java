@@ -253,14 +253,8 @@ public final class QuadraticBendBlock extends ConstraintBlock {
     @Override void sweepOrder(int[] order) {
         if (!patch || order == sweepOrdered && sweepOrderedUnits == units()) return; // a grab recolours the attachments alone
         final int n = arity();
-        int[] q = new int[n * order.length];
-        double[] c = new double[n * order.length];
-        for (int k = 0; k < order.length; k++) {
-            System.arraycopy(particles, 3 * n * order[k], q, n * k, n);
-            System.arraycopy(coefficient, n * order[k], c, n * k, n);
-        }
-        sweepParticles = q;
-        sweepCoefficient = c;
+        sweepParticles = inOrder(particles, 3 * n, n, order); // a row's three components list the same particles
+        sweepCoefficient = inOrder(coefficient, n, n, order);
         sweepOrderedUnits = order.length;
         sweepOrdered = order;
     }
