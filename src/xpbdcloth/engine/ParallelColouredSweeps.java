@@ -40,6 +40,8 @@ final class ParallelColouredSweeps implements SolveStage, Team.Job {
         final SweepOrder c = colouring;
         final int colours = c.phases(), threads = t.threads();
         final boolean serialPart = contacts.count() > 0 || gases.count() > 0;
+        // Read once, before the first barrier: after the last one the caller may already be setting the next solve's.
+        final int iterations = this.iterations;
         for (int it = 0; it < iterations; it++) {
             for (int k = 0; k < colours; k++) {
                 // Each thread takes its share of every block's part of the colour.

@@ -8,6 +8,9 @@ import java.util.concurrent.locks.LockSupport;
  * barrier the job calls between its phases. Helper threads are made once and reused; between jobs they
  * spin briefly and then park, and the barrier is a counter, so a step allocates nothing. A job whose
  * phases touch disjoint data per share (the colours of a sweep) gives the same bits on any thread count.
+ * A job reads whatever it branches or loops on (its iteration count, whether a phase runs) before its first
+ * barrier, into locals: once the last barrier opens the caller returns and may set those fields for the next
+ * job while a helper is still finishing this one.
  */
 final class Team {
     /** What every thread of the team runs: {@code id} is its share, 0 the caller's. */

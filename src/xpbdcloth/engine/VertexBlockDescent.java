@@ -751,9 +751,16 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
         return 0.5 * elastic;
     }
 
-    /** A substep's iterations on the team: each colour split into shares, the projected blocks on the caller. */
+    /**
+     * A substep's iterations on the team: each colour split into shares, the projected blocks on the caller.
+     * What the job decides by is read once, here, before its first barrier: after its last one the caller
+     * returns and may begin the next substep, setting these fields anew while a helper is still on its way
+     * out (a helper that then read {@code bounded} afresh summed the next substep's energy and waited at a
+     * barrier of the next job: the threads fell out of step, seen as tearing giving other bits run to run).
+     */
     @Override public void work(int id, Team t) {
-        final int threads = t.threads(), colours = colours();
+        final int threads = t.threads(), colours = colours(), iterations = this.iterations;
+        final boolean bounded = this.bounded;
         if (bounded) budgetAndStart(id, threads);
         for (int it = 0; it < iterations; it++) {
             for (int c = 0; c < colours; c++) {
