@@ -169,10 +169,24 @@ public abstract class ConstraintBlock {
 
     /**
      * The coloured sweep's order of this block's units (all of them, colour by colour), told once when a
-     * coloured order is made and before any sweep in it, so a block may keep its rows' data in that order;
-     * {@link #projectListed} then gets this very array.
+     * coloured order is made and before any sweep in it, so a block may keep its rows' data in that order
+     * ({@link #layOutIn}); {@link #projectListed} then gets this very array and asks {@link #laidOutIn}.
+     * Told the order it has already (a grab recolours only the attachments), it copies nothing.
      */
-    void sweepOrder(int[] order) { }
+    final void sweepOrder(int[] order) {
+        if (laidOutIn(order)) return;
+        if (layOutIn(order)) { laidOutOrder = order; laidOutUnits = units(); }
+    }
+
+    /** The order the block's copy is in (null before any), and its unit count then (a unit added since makes it stale). */
+    private int[] laidOutOrder;
+    private int laidOutUnits = -1;
+
+    /** Whether the block holds a copy of its data in this order, made for the units it has now. */
+    final boolean laidOutIn(int[] order) { return order == laidOutOrder && laidOutUnits == units(); }
+
+    /** Copies what a sweep reads per unit into {@code order}'s order; false for a kind that keeps no copy (the default). */
+    boolean layOutIn(int[] order) { return false; }
 
     /** a[stride·order[k] + j] for every k and every j &lt; width, in that order: per-unit data laid out in a sweep's order. */
     static int[] inOrder(int[] a, int stride, int width, int[] order) {

@@ -21,10 +21,9 @@ public final class DistanceBlock extends ConstraintBlock implements LinearLength
 
     /** L per constraint, m. */
     double[] rest;
-    /** The coloured order {@link #sweepOrder} was told (null before any), and its constraints' ends and L in it. */
-    private int[] sweepOrdered, sweepParticles;
+    /** The constraints' ends and L in the coloured sweep's order ({@link #layOutIn}). */
+    private int[] sweepParticles;
     private double[] sweepRest;
-    private int sweepOrderedUnits = -1;
 
     public DistanceBlock(ConstraintFamily family, int capacity) {
         super(family, 2, capacity);
@@ -112,7 +111,7 @@ public final class DistanceBlock extends ConstraintBlock implements LinearLength
     }
 
     @Override void projectListed(int[] order, int from, int to, Particles p, SolverContext ctx) {
-        if (order != sweepOrdered || sweepOrderedUnits != count) {
+        if (!laidOutIn(order)) {
             if (uniformXpbd(ctx)) { final double alphaTilde = compliance(0) * ctx.inverseH2; for (int k = from; k < to; k++) projectXpbd(order[k], p, alphaTilde); }
             else for (int k = from; k < to; k++) project(order[k], p, ctx);
         } else if (uniformXpbd(ctx)) {
@@ -123,14 +122,12 @@ public final class DistanceBlock extends ConstraintBlock implements LinearLength
 
     /**
      * The constraints' ends and rest lengths copied into the coloured sweep's order, which then reads them in
-     * order rather than from wherever each constraint lies (as {@link QuadraticBendBlock#sweepOrder} does).
+     * order rather than from wherever each constraint lies (as {@link QuadraticBendBlock#layOutIn} does).
      */
-    @Override void sweepOrder(int[] order) {
-        if (order == sweepOrdered && sweepOrderedUnits == count) return; // a grab recolours the attachments alone
+    @Override boolean layOutIn(int[] order) {
         sweepParticles = inOrder(particles, 2, 2, order);
         sweepRest = inOrder(rest, 1, 1, order);
-        sweepOrderedUnits = order.length;
-        sweepOrdered = order;
+        return true;
     }
 
     /**

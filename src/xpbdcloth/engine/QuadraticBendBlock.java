@@ -33,10 +33,9 @@ public final class QuadraticBendBlock extends ConstraintBlock {
     private final boolean patch;
     /** α·B per unit, so α = this / B: (A₀ + A₁)/|e|² for a hinge, 1 for a patch row (its C carries √A). */
     double[] complianceTimesStiffness;
-    /** The coloured order {@link #sweepOrder} was told (null before any, and for hinges), and its units' data in it. */
-    private int[] sweepOrdered, sweepParticles;
+    /** A patch block's rows' particles and coefficients in the coloured sweep's order ({@link #layOutIn}). */
+    private int[] sweepParticles;
     private double[] sweepCoefficient;
-    private int sweepOrderedUnits = -1;
 
     /** A block of hinges (four particles each). */
     public QuadraticBendBlock(ConstraintFamily family, int hingeCapacity) { this(family, 4, false, hingeCapacity); }
@@ -237,7 +236,7 @@ public final class QuadraticBendBlock extends ConstraintBlock {
     }
 
     @Override void projectListed(int[] order, int from, int to, Particles p, SolverContext ctx) {
-        if (order == sweepOrdered && sweepOrderedUnits == units()) {
+        if (laidOutIn(order)) {
             final int n = arity();
             for (int k = from; k < to; k++) projectPatchRow(order[k], sweepParticles, n * k, sweepCoefficient, n * k, p, ctx);
         } else for (int k = from; k < to; k++) project(order[k], p, ctx);
@@ -250,13 +249,12 @@ public final class QuadraticBendBlock extends ConstraintBlock {
      * Gauss–Seidel step 2.4× the as-built order's). Read in order, the copy streams. The same rows, the same
      * arithmetic: the same bits. Hinges (four particles) are left as they are.
      */
-    @Override void sweepOrder(int[] order) {
-        if (!patch || order == sweepOrdered && sweepOrderedUnits == units()) return; // a grab recolours the attachments alone
+    @Override boolean layOutIn(int[] order) {
+        if (!patch) return false;
         final int n = arity();
         sweepParticles = inOrder(particles, 3 * n, n, order); // a row's three components list the same particles
         sweepCoefficient = inOrder(coefficient, n, n, order);
-        sweepOrderedUnits = order.length;
-        sweepOrdered = order;
+        return true;
     }
 
     @Override Constraint view(int i) { return new BlockConstraint(this, i); }
