@@ -2,6 +2,11 @@ package xpbdcloth.tools;
 
 import static org.junit.jupiter.api.Assertions.*;
 
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import xpbdcloth.engine.SolverType;
@@ -27,16 +32,27 @@ class RobustnessCommandsTest {
      * such cases went non-finite, so either count would have caught it); a failure names its seed.
      */
     @Test
-    void fuzzCasesForEverySolver() {
+    void fuzzCasesForEverySolver() throws Exception {
         StringBuilder failures = new StringBuilder();
-        for (SolverType t : SolverType.values()) {
-            int cases = t == SolverType.GAUSS_SEIDEL ? 1000 : t == SolverType.JACOBI_PCG ? 200 : 100;
-            long t0 = System.nanoTime();
-            for (long seed = 1; seed <= cases; seed++) {
-                String why = Fuzz.runCase(seed, t);
-                if (why != null) failures.append(t.label()).append(": ").append(why).append('\n');
+        // Each case is its own simulation: two at a time (the machines have two cores), reported in seed order.
+        ExecutorService pool = Executors.newFixedThreadPool(2);
+        try {
+            for (SolverType t : SolverType.values()) {
+                int cases = t == SolverType.GAUSS_SEIDEL ? 1000 : t == SolverType.JACOBI_PCG ? 200 : 100;
+                long t0 = System.nanoTime();
+                List<Future<String>> outcomes = new ArrayList<>();
+                for (long seed = 1; seed <= cases; seed++) {
+                    final long s = seed;
+                    outcomes.add(pool.submit(() -> Fuzz.runCase(s, t)));
+                }
+                for (Future<String> outcome : outcomes) {
+                    String why = outcome.get();
+                    if (why != null) failures.append(t.label()).append(": ").append(why).append('\n');
+                }
+                System.out.printf("fuzz %s: %d cases, %.1f s%n", t.label(), cases, (System.nanoTime() - t0) / 1e9);
             }
-            System.out.printf("fuzz %s: %d cases, %.1f s%n", t.label(), cases, (System.nanoTime() - t0) / 1e9);
+        } finally {
+            pool.shutdownNow();
         }
         assertEquals("", failures.toString());
     }
