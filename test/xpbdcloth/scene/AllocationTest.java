@@ -4,11 +4,10 @@ import static org.junit.jupiter.api.Assertions.*;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
+import java.util.concurrent.Callable;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
+import xpbdcloth.TwoAtATime;
 
 /**
  * Hot loops allocate nothing: every shipped scene, wind switched on, allocates (next to) no bytes per
@@ -20,24 +19,20 @@ import org.junit.jupiter.api.Test;
 class AllocationTest {
     @Test
     void everySceneStepsWithoutAllocating() throws Exception {
-        // Each scene counted on the thread that steps it; two scenes at a time (the machines have two cores).
-        ExecutorService pool = Executors.newFixedThreadPool(2);
-        List<Future<Double>> counts = new ArrayList<>();
-        try {
-            for (String name : PresetLoader.BUILT_IN) counts.add(pool.submit(() -> bytesPerStep(name)));
-            StringBuilder report = new StringBuilder();
-            List<String> failures = new ArrayList<>();
-            for (int k = 0; k < counts.size(); k++) {
-                String name = PresetLoader.BUILT_IN.get(k);
-                double perStep = counts.get(k).get();
-                report.append(String.format(java.util.Locale.ROOT, "%s %.1f B/step; ", name, perStep));
-                if (!(perStep < 16)) failures.add(name + " allocates " + perStep + " bytes per step");
-            }
-            System.out.println(report);
-            assertTrue(failures.isEmpty(), String.join("; ", failures));
-        } finally {
-            pool.shutdownNow();
+        // Each scene counted on the thread that steps it (the counter is per thread), two scenes at a time.
+        List<Callable<Double>> scenes = new ArrayList<>();
+        for (String name : PresetLoader.BUILT_IN) scenes.add(() -> bytesPerStep(name));
+        List<Double> counts = TwoAtATime.results(scenes);
+        StringBuilder report = new StringBuilder();
+        List<String> failures = new ArrayList<>();
+        for (int k = 0; k < counts.size(); k++) {
+            String name = PresetLoader.BUILT_IN.get(k);
+            double perStep = counts.get(k);
+            report.append(String.format(java.util.Locale.ROOT, "%s %.1f B/step; ", name, perStep));
+            if (!(perStep < 16)) failures.add(name + " allocates " + perStep + " bytes per step");
         }
+        System.out.println(report);
+        assertTrue(failures.isEmpty(), String.join("; ", failures));
     }
 
     /** Bytes a step of the shipped scene allocates on this thread once warmed up, wind on. */

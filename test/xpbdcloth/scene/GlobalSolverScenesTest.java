@@ -4,11 +4,10 @@ import static org.junit.jupiter.api.Assertions.*;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
+import java.util.concurrent.Callable;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
+import xpbdcloth.TwoAtATime;
 import xpbdcloth.engine.ConstraintFamily;
 import xpbdcloth.engine.Metrics;
 import xpbdcloth.engine.Simulation;
@@ -43,19 +42,18 @@ class GlobalSolverScenesTest {
 
     @Test
     void theFirstFiveScenesStayStableUnderEitherGlobalSolver() throws Exception {
-        // Ten runs of about a minute each: two at a time (the machines have two cores).
-        ExecutorService pool = Executors.newFixedThreadPool(2);
-        List<Future<Object>> results = new ArrayList<>();
+        // Ten runs of about a minute each: two at a time.
+        List<Callable<Object>> runs = new ArrayList<>();
         List<String> names = new ArrayList<>();
         for (String scene : FIRST_FIVE)
             for (SolverType type : new SolverType[] {SolverType.JACOBI_PCG, SolverType.MULTIGRID_PCG}) {
-                results.add(pool.submit(() -> run(scene, type)));
+                runs.add(() -> run(scene, type));
                 names.add(scene + " under " + type);
             }
-        pool.shutdown();
+        List<Object> results = TwoAtATime.results(runs);
         List<String> failures = new ArrayList<>();
         for (int i = 0; i < results.size(); i++) {
-            Object r = results.get(i).get();
+            Object r = results.get(i);
             if (r instanceof String) { failures.add((String) r); continue; }
             double[] v = (double[]) r;
             System.out.printf("%s, %d steps: peak strain %.4f, largest kinetic energy %.3e J in the first %d steps, %.3e J in the last 1000%n",

@@ -4,11 +4,10 @@ import static org.junit.jupiter.api.Assertions.*;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
+import java.util.concurrent.Callable;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
+import xpbdcloth.TwoAtATime;
 import xpbdcloth.engine.SolverType;
 
 /** The short versions of `gradle soak` and the fuzzer, as CI runs them. */
@@ -34,25 +33,18 @@ class RobustnessCommandsTest {
     @Test
     void fuzzCasesForEverySolver() throws Exception {
         StringBuilder failures = new StringBuilder();
-        // Each case is its own simulation: two at a time (the machines have two cores), reported in seed order.
-        ExecutorService pool = Executors.newFixedThreadPool(2);
-        try {
-            for (SolverType t : SolverType.values()) {
-                int cases = t == SolverType.GAUSS_SEIDEL ? 1000 : t == SolverType.JACOBI_PCG ? 200 : 100;
-                long t0 = System.nanoTime();
-                List<Future<String>> outcomes = new ArrayList<>();
-                for (long seed = 1; seed <= cases; seed++) {
-                    final long s = seed;
-                    outcomes.add(pool.submit(() -> Fuzz.runCase(s, t)));
-                }
-                for (Future<String> outcome : outcomes) {
-                    String why = outcome.get();
-                    if (why != null) failures.append(t.label()).append(": ").append(why).append('\n');
-                }
-                System.out.printf("fuzz %s: %d cases, %.1f s%n", t.label(), cases, (System.nanoTime() - t0) / 1e9);
+        // Each case is its own simulation: two at a time, reported in seed order.
+        for (SolverType t : SolverType.values()) {
+            int cases = t == SolverType.GAUSS_SEIDEL ? 1000 : t == SolverType.JACOBI_PCG ? 200 : 100;
+            long t0 = System.nanoTime();
+            List<Callable<String>> runs = new ArrayList<>();
+            for (long seed = 1; seed <= cases; seed++) {
+                final long s = seed;
+                runs.add(() -> Fuzz.runCase(s, t));
             }
-        } finally {
-            pool.shutdownNow();
+            for (String why : TwoAtATime.results(runs))
+                if (why != null) failures.append(t.label()).append(": ").append(why).append('\n');
+            System.out.printf("fuzz %s: %d cases, %.1f s%n", t.label(), cases, (System.nanoTime() - t0) / 1e9);
         }
         assertEquals("", failures.toString());
     }
