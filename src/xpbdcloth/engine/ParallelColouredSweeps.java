@@ -40,7 +40,7 @@ final class ParallelColouredSweeps implements SolveStage, Team.Job {
         final SweepOrder c = colouring;
         final int colours = c.phases(), threads = t.threads();
         final boolean serialPart = contacts.count() > 0 || gases.count() > 0;
-        // Read once, before the first barrier: after the last one the caller may already be setting the next solve's.
+        // Read once, at the top (the team closes every job on a barrier before the caller sets the next).
         final int iterations = this.iterations;
         for (int it = 0; it < iterations; it++) {
             for (int k = 0; k < colours; k++) {

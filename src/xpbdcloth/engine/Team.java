@@ -8,9 +8,8 @@ import java.util.concurrent.locks.LockSupport;
  * barrier the job calls between its phases. Helper threads are made once and reused; between jobs they
  * spin briefly and then park, and the barrier is a counter, so a step allocates nothing. A job whose
  * phases touch disjoint data per share (the colours of a sweep) gives the same bits on any thread count.
- * A job reads whatever it branches or loops on (its iteration count, whether a phase runs) before its first
- * barrier, into locals: once the last barrier opens the caller returns and may set those fields for the next
- * job while a helper is still finishing this one.
+ * {@link #run} returns only once every thread has left the job (each meets one more barrier after its
+ * share), so the caller may set the next job's fields at once: no helper still reads them for this one.
  */
 final class Team {
     /** What every thread of the team runs: {@code id} is its share, 0 the caller's. */
@@ -41,12 +40,13 @@ final class Team {
 
     int threads() { return threads; }
 
-    /** Runs {@code j} on every thread, this one taking share 0; returns when this share is done (the job ends on a barrier). */
+    /** Runs {@code j} on every thread, this one taking share 0; returns when every share has left the job. */
     void run(Job j) {
         job = j;
         jobGeneration++; // volatile write publishes the job
         for (Thread h : helpers) LockSupport.unpark(h);
         j.work(0, this);
+        await(); // the job is over for every thread before the caller may change what it reads
     }
 
     private void helperLoop(int id) {
@@ -60,6 +60,7 @@ final class Team {
             if (shutdown) return;
             seen = jobGeneration;
             job.work(id, this);
+            await();
         }
     }
 

@@ -753,10 +753,8 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
 
     /**
      * A substep's iterations on the team: each colour split into shares, the projected blocks on the caller.
-     * What the job decides by is read once, here, before its first barrier: after its last one the caller
-     * returns and may begin the next substep, setting these fields anew while a helper is still on its way
-     * out (a helper that then read {@code bounded} afresh summed the next substep's energy and waited at a
-     * barrier of the next job: the threads fell out of step, seen as tearing giving other bits run to run).
+     * What the job decides by is read once, at its top, into locals (the team's closing barrier keeps the
+     * caller from changing these fields before every helper is out; reading them once says so here too).
      */
     @Override public void work(int id, Team t) {
         final int threads = t.threads(), colours = colours(), iterations = this.iterations;
