@@ -3,7 +3,6 @@ package xpbdcloth.scene;
 import static org.junit.jupiter.api.Assertions.*;
 
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
@@ -197,25 +196,19 @@ class TrajectoryHashTest {
 
     @Test
     void shippedScenesReproduceTheRecordedTrajectories() throws Exception {
-        List<String> keys = new ArrayList<>();
+        // The one-thread variants two at a time; the two-thread ones one by one after, their team on both cores.
+        List<String> oneThread = new ArrayList<>(), twoThreads = new ArrayList<>();
         for (String scene : PresetLoader.BUILT_IN)
-            for (String variant : VARIANTS) keys.add(scene + "/" + variant);
-        // The one-thread variants two at a time (the test took a fifth of the suite one at a time); the two-thread
-        // ones alone after, their team on both cores.
-        Map<String, String> now = new HashMap<>();
-        List<String> alone = new ArrayList<>();
-        List<Callable<String>> side = new ArrayList<>();
-        List<String> sideKeys = new ArrayList<>();
-        for (String key : keys)
-            if (key.endsWith("/coloured-2-threads")) alone.add(key);
-            else { sideKeys.add(key); side.add(() -> hashOf(key)); }
-        List<String> sideHashes = TwoAtATime.results(side);
-        for (int k = 0; k < sideKeys.size(); k++) now.put(sideKeys.get(k), sideHashes.get(k));
-        for (String key : alone) now.put(key, hashOf(key));
+            for (String variant : VARIANTS)
+                (variant.endsWith("-2-threads") ? twoThreads : oneThread).add(scene + "/" + variant);
+        List<Callable<String>> jobs = new ArrayList<>();
+        for (String key : oneThread) jobs.add(() -> hashOf(key));
+        List<String> keys = new ArrayList<>(oneThread), hashes = new ArrayList<>(TwoAtATime.results(jobs));
+        for (String key : twoThreads) { keys.add(key); hashes.add(hashOf(key)); }
         StringBuilder printed = new StringBuilder();
         int mismatches = 0;
-        for (String key : keys) {
-            String h = now.get(key);
+        for (int k = 0; k < keys.size(); k++) {
+            String key = keys.get(k), h = hashes.get(k);
             printed.append(String.format("            Map.entry(\"%s\", \"%s\"),%n", key, h));
             if (!h.equals(RECORDED.get(key))) mismatches++;
         }
