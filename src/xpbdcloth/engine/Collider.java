@@ -96,6 +96,13 @@ public abstract class Collider {
     abstract double clearance(Particles p, int i);
 
     /**
+     * The same C for any world point (x, y, z) against the collider where it is now: its distance outside the
+     * surface less the margin, m, negative where a contact would push a particle out. A measurement, for what
+     * contacts cannot move (a pinned or held particle); +∞ for what is not a solid (the cloth's own thickness).
+     */
+    public abstract double clearanceAt(double x, double y, double z);
+
+    /**
      * Contact i's projection moving {@code particle} alone (a solver that updates particles one at a time):
      * a collider's contact moves only its particle anyway; a contact between two particles moves this one
      * by its share.

@@ -63,6 +63,8 @@ public final class MeshCollider extends RigidCollider {
     private int[] candidates = new int[512];
     /** Scratch of the collide stage and of measurements (one thread). */
     private final double[] point = new double[6], scratch = new double[9];
+    /** The triangle the last {@link #distance} query found nearest, and the feature of it the closest point lies on. */
+    private int nearestTriangle, nearestFeature;
     /**
      * Scratch of the projection, one per thread: vertex block descent projects the contacts of the particles
      * of one colour on several threads at once (no allocation after a thread's first contact).
@@ -439,11 +441,26 @@ public final class MeshCollider extends RigidCollider {
         return closed && windingNumber(x, y, z) >= 0.5 ? -d : d;
     }
 
+    /**
+     * C at a world point (see {@link Collider#clearanceAt}), decided as the contacts decide it: outside a closed
+     * mesh where the point lies the way of the pseudonormal of the nearest feature (one nearest-triangle query,
+     * not {@link #signedDistance}'s winding number over every triangle); an open mesh has no inside. Inside two
+     * overlapping closed parts near the other's surface it can read outside, where the winding number would not.
+     */
+    @Override public double clearanceAt(double x, double y, double z) {
+        double d = distance(x, y, z); // leaves the nearest triangle's closest point in point
+        if (!closed || d < 1e-12) return d - margin;
+        pseudonormal(nearestFeature, nearestTriangle, triangles, edgeOf, faceNow, vertexNow, edgeNow, scratch);
+        double along = (x - point[0]) * scratch[6] + (y - point[1]) * scratch[7] + (z - point[2]) * scratch[8];
+        return (along >= 0 ? d : -d) - margin;
+    }
+
     /** The unsigned distance from world point (x, y, z) to the mesh now, m. */
     public double distance(double x, double y, double z) {
         queryX = x; queryY = y; queryZ = z;
         int t = bvh.nearest(x, y, z, Double.POSITIVE_INFINITY, toQuery);
-        TriangleGeometry.closestPoint(x, y, z, now, triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2], point);
+        nearestTriangle = t;
+        nearestFeature = TriangleGeometry.closestPoint(x, y, z, now, triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2], point);
         double dx = x - point[0], dy = y - point[1], dz = z - point[2];
         return Math.sqrt(dx * dx + dy * dy + dz * dz);
     }

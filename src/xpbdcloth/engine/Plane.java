@@ -50,7 +50,9 @@ public final class Plane extends Collider {
 
     @Override void project(Particles p, int i, double h) { PlaneContact.project(p, i, this, h); }
 
-    @Override double clearance(Particles p, int i) { return distance(p.x[3 * i], p.x[3 * i + 1], p.x[3 * i + 2]) - margin; }
+    @Override double clearance(Particles p, int i) { return clearanceAt(p.x[3 * i], p.x[3 * i + 1], p.x[3 * i + 2]); }
+
+    @Override public double clearanceAt(double x, double y, double z) { return distance(x, y, z) - margin; }
 
     public double normalX() { return nx; }
     public double normalY() { return ny; }

@@ -93,10 +93,12 @@ public abstract class RigidCollider extends Collider {
 
     @Override void project(Particles p, int i, double h) { ShapeContact.project(p, i, this, h); }
 
-    @Override double clearance(Particles p, int i) {
+    @Override double clearance(Particles p, int i) { return clearanceAt(p.x[3 * i], p.x[3 * i + 1], p.x[3 * i + 2]); }
+
+    @Override public double clearanceAt(double x, double y, double z) {
         double[][] w = work.get();
         double[] q = w[0];
-        toLocal(p.x[3 * i], p.x[3 * i + 1], p.x[3 * i + 2], q);
+        toLocal(x, y, z, q);
         return distance(q[0], q[1], q[2], w[1]) - margin;
     }
 

@@ -401,4 +401,7 @@ public final class SelfCollision extends Collider implements Team.Job {
         double dx = p.x[a] - p.x[b], dy = p.x[a + 1] - p.x[b + 1], dz = p.x[a + 2] - p.x[b + 2];
         return Math.sqrt(dx * dx + dy * dy + dz * dz) - thickness;
     }
+
+    /** The cloth's thickness is no solid a point can be inside. */
+    @Override public double clearanceAt(double x, double y, double z) { return Double.POSITIVE_INFINITY; }
 }

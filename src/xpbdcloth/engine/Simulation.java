@@ -91,6 +91,12 @@ public final class Simulation {
     /** Whether anything moves particles by script (pin scripts, kinematic paths). */
     public boolean hasKinematics() { return !kinematics.isEmpty(); }
 
+    /**
+     * Pinned or held particles (pins, pin motions, attachments) inside a solid collider now: the solid and the
+     * hold fight through the cloth between them, doing work no energy bound holds ({@link HeldInsideColliders}).
+     */
+    public int heldInsideColliders() { return HeldInsideColliders.count(particles, constraints.attachments(), spheres, planes, solids); }
+
     /** What the last step cost and found (filled in place by every step). */
     public StepProfile profile() { return profile; }
 

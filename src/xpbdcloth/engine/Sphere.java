@@ -84,8 +84,10 @@ public final class Sphere extends Collider {
 
     @Override void project(Particles p, int i, double h) { SphereContact.project(p, i, this, h); }
 
-    @Override double clearance(Particles p, int i) {
-        double dx = p.x[3 * i] - cx, dy = p.x[3 * i + 1] - cy, dz = p.x[3 * i + 2] - cz;
+    @Override double clearance(Particles p, int i) { return clearanceAt(p.x[3 * i], p.x[3 * i + 1], p.x[3 * i + 2]); }
+
+    @Override public double clearanceAt(double x, double y, double z) {
+        double dx = x - cx, dy = y - cy, dz = z - cz;
         return Math.sqrt(dx * dx + dy * dy + dz * dz) - (radius + margin);
     }
 

@@ -299,8 +299,9 @@ final class Hud {
     }
 
     /**
-     * The crossing count's text, counted every {@link #CROSSINGS_EVERY} formats: a count costs milliseconds on the
-     * shipped cloths (measured in docs/contacts.md), too much for every frame.
+     * The held and crossing counts' text, counted every {@link #CROSSINGS_EVERY} formats: a crossing count costs
+     * milliseconds on the shipped cloths (measured in docs/contacts.md), and the held count a millisecond on the
+     * drape tester's clamped ring over its pedestal mesh: too much for every frame.
      */
     private String crossings = "";
     private int formatsSinceCrossings = Integer.MAX_VALUE;
@@ -309,7 +310,7 @@ final class Hud {
 
     private String crossingsText(xpbdcloth.scene.Scene scene) {
         if (++formatsSinceCrossings >= CROSSINGS_EVERY || scene != crossingsCountedFor) {
-            crossings = crossings(scene);
+            crossings = held(scene.simulation()) + crossings(scene);
             formatsSinceCrossings = 0;
             crossingsCountedFor = scene;
         }
@@ -338,5 +339,14 @@ final class Hud {
     static String pinched(Simulation sim) {
         int n = sim.profile().pinchedParticles();
         return n == 0 ? "" : fmt(", %d pinched inside a collider", n);
+    }
+
+    /**
+     * ", N held inside a collider" when a pin or a grab holds cloth inside a solid, where the two fight through the
+     * cloth (Simulation.heldInsideColliders), else nothing.
+     */
+    static String held(Simulation sim) {
+        int n = sim.heldInsideColliders();
+        return n == 0 ? "" : fmt(", %d held inside a collider", n);
     }
 }
