@@ -50,6 +50,9 @@ public final class Fuzz implements Callable<Integer> {
      */
     public static String runCase(long seed, SolverType solver) { return runCase(seed, solver, false); }
 
+    /** The standard deviation of a grabbing hand's speed on each axis, m/s: a quick flick of the wrist. */
+    static final double HAND_SPEED = 5;
+
     /**
      * The same; with {@code plausible}, a case whose kinetic energy exceeds what gravity and its drivers can
      * have given ({@link Plausibility}) fails too. Not yet part of the pass: it finds cases the engine does
@@ -67,7 +70,7 @@ public final class Fuzz implements Callable<Integer> {
             int steps = 10 + r.nextInt(40);
             // A mode switch changes the cloth's energy function under load (PBD's k has none, XPBD's α another):
             // like stiffening a loaded spring it does work the bound does not count, so the bound judges a case
-            // up to its first switch.
+            // up to its first switch (and up to a hold inside a solid, below).
             boolean judged = plausible;
             for (int k = 0; k < steps; k++) {
                 if (grab == null && r.nextInt(8) == 0) {
@@ -77,7 +80,10 @@ public final class Fuzz implements Callable<Integer> {
                     if (inRange(sim.particles(), i)) grab = sim.attach(i, sim.particles().x(i), sim.particles().y(i), sim.particles().z(i));
                 }
                 if (grab != null) {
-                    double dx = r.nextGaussian() * 0.05, dy = r.nextGaussian() * 0.05;
+                    // A hand's move in a step: up to about 5 cm, as fast as a hand goes (a step of 10 µs moving 5 cm
+                    // would be a hand at 5 km/s, whose work no bound can credit as a user's).
+                    double reach = Math.min(0.05, HAND_SPEED * sim.settings().timestep());
+                    double dx = r.nextGaussian() * reach, dy = r.nextGaussian() * reach;
                     grab.moveTarget(grab.targetX() + dx, grab.targetY() + dy, grab.targetZ()); // its work is counted by the engine
                 }
                 if (grab != null && r.nextInt(10) == 0) { sim.release(grab); grab = null; }
@@ -93,7 +99,11 @@ public final class Fuzz implements Callable<Integer> {
                     String refused = switchSolver(sim, to);
                     if (refused != null) return "seed " + seed + ": " + refused;
                 }
+                // A pin or a hand holding cloth inside a solid: the two fight through the cloth with no bound on the
+                // work they do (Simulation.heldInsideColliders), so the bound judges a case up to that too.
+                if (judged && sim.heldInsideColliders() > 0) judged = false;
                 sim.step();
+                if (judged && sim.heldInsideColliders() > 0) judged = false;
                 String implausible = judged ? bound.check(drive[0]) : null;
                 if (implausible != null && illegal == null) return "seed " + seed + ": step " + (k + 1) + ": " + implausible + " [" + describe(sim) + "]";
             }
@@ -127,7 +137,7 @@ public final class Fuzz implements Callable<Integer> {
     static boolean drawsTriangles(long seed) { return new Random(~seed).nextInt(3) == 0; }
 
     /** Whether particle i is within the engine's position range (so a grab target there is legal). */
-    private static boolean inRange(xpbdcloth.engine.Particles p, int i) {
+    static boolean inRange(xpbdcloth.engine.Particles p, int i) {
         double max = xpbdcloth.engine.EngineRange.MAX_POSITION;
         return Math.abs(p.x(i)) < max && Math.abs(p.y(i)) < max && Math.abs(p.z(i)) < max;
     }
