@@ -62,6 +62,16 @@ public final class ShearBlock extends ConstraintBlock {
 
     public double restAngle(int i) { return restAngle[i]; }
 
+    /** Whether the corner at {@code vertex} has an angle now: both its sides longer than {@link DistanceBlock#MIN_LENGTH}. */
+    static boolean hasAngle(Particles p, int vertex, int end1, int end2) {
+        return side(p, vertex, end1) >= DistanceBlock.MIN_LENGTH && side(p, vertex, end2) >= DistanceBlock.MIN_LENGTH;
+    }
+
+    private static double side(Particles p, int a, int b) {
+        double dx = p.x[3 * b] - p.x[3 * a], dy = p.x[3 * b + 1] - p.x[3 * a + 1], dz = p.x[3 * b + 2] - p.x[3 * a + 2];
+        return Math.sqrt(dx * dx + dy * dy + dz * dz);
+    }
+
     /** The current angle θ of constraint i in radians (π/2 if an edge has zero length). */
     public double angle(int i, Particles p) {
         double[] x = p.x;
