@@ -137,7 +137,7 @@ public final class Fuzz implements Callable<Integer> {
     static boolean drawsTriangles(long seed) { return new Random(~seed).nextInt(3) == 0; }
 
     /** Whether particle i is within the engine's position range (so a grab target there is legal). */
-    static boolean inRange(xpbdcloth.engine.Particles p, int i) {
+    private static boolean inRange(xpbdcloth.engine.Particles p, int i) {
         double max = xpbdcloth.engine.EngineRange.MAX_POSITION;
         return Math.abs(p.x(i)) < max && Math.abs(p.y(i)) < max && Math.abs(p.z(i)) < max;
     }
