@@ -76,6 +76,11 @@ public final class AttachmentBlock extends ConstraintBlock {
         System.arraycopy(goal, 0, start, 0, 3 * count);
     }
 
+    /** Adds to attachment i's force in this substep (N): a solver that holds the particle on the target rather than projecting it there says what the hold cost. */
+    void addForce(int i, double fx, double fy, double fz) {
+        force[3 * i] += fx; force[3 * i + 1] += fy; force[3 * i + 2] += fz;
+    }
+
     /** After a substep's solve: adds F·Δx (Δx = x − x_prev, the particle's move in the substep) to the work, and starts the next substep's force at 0. */
     void countWork(Particles p) {
         double w = 0;

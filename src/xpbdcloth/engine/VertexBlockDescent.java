@@ -15,9 +15,10 @@ import java.util.List;
  * </pre>
  * ([·]₊: the second-derivative term where it stiffens, so Hᵢ stays positive definite). The compliances
  * are XPBD's. What has no compliance enters as a stiff penalty (a tether's stretch, two layers of the
- * cloth closer than its thickness, with friction as a lagged dissipative force) or is met right after the
- * particle's step (a hard attachment, a contact with a solid, which keeps its continuous tests); a hard
- * constraint of another kind (α = 0 has no energy) is projected as in XPBD after each iteration.
+ * cloth closer than its thickness, with friction as a lagged dissipative force), is met right after the
+ * particle's step (a contact with a solid, which keeps its continuous tests) or holds the particle throughout
+ * (a hard attachment: the particle stays on its hand's target, as on a moving pin, and the hand takes the
+ * force); a hard constraint of another kind (α = 0 has no energy) is projected as in XPBD after each iteration.
  *
  * <p>Why: XPBD resets λ every substep, so a Gauss–Seidel sweep rebuilds every force from nothing, and
  * the few sweeps a step can afford carry a pin's hold only a few edges into the cloth: its rest sags and
@@ -51,8 +52,19 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
     private final int n;
     /** The inertial target y of the substep. */
     private final double[] target;
-    /** The substep's start without motion: the free particles where the substep began, the pinned where they are now. */
+    /** The substep's start without motion: the free particles where the substep began, the pinned where they are now, the held at their targets. */
     private final double[] stillStart;
+    /**
+     * Per free particle, the hard attachment holding it this substep (a grab), or −1. A held particle is the
+     * hand's: it stays on the target through the iterations, as a moving pin would, and the energy bound counts
+     * it as it counts a pin's.
+     */
+    private final int[] heldBy;
+    /** The held particles of this substep, the first {@link #heldCount}: what {@link #heldBy} marks, so a substep walks the hands, not the cloth. */
+    private final int[] held;
+    private int heldCount;
+    /** Per held particle, xyz: the force its hand exerts to keep it on the target, from its last iteration. */
+    private final double[] handForce;
 
     // Membrane triangles: particles, D⁻¹ (P, Q, R, S), K = Σ_r r rᵀ/α_r (K00, K01, K11, K22) and their source rows.
     private final int[] triParticle;
@@ -154,6 +166,10 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
         target = new double[3 * n];
         stillStart = new double[3 * n];
         keptPositions = new double[3 * n];
+        heldBy = new int[n];
+        Arrays.fill(heldBy, -1);
+        held = new int[n];
+        handForce = new double[3 * n];
         contactStart = new int[n + 1];
         List<ConstraintBlock> projected = new ArrayList<>();
         List<MembraneBlock> membranes = new ArrayList<>();
@@ -429,6 +445,7 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
         this.iterations = iterations;
         if (team != null && probe == null) {
             team.run(this);
+            chargeHands();
             withoutEnergyGain();
             return;
         }
@@ -439,6 +456,7 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
                 for (int c = 0, nc = colours(); c < nc; c++) solveColour(c, 0, 1);
                 rest.sweep(particles, ctx);
                 gases.project(particles);
+                meetHeld();
             } else {
                 // The colours' order, one particle at a time (its step moves it alone, with its contacts and pins).
                 for (int k = 0; k < n; k++) {
@@ -447,10 +465,12 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
                 }
                 rest.sweep(particles, ctx, probe);
                 gases.project(particles, probe);
+                meetHeld();
             }
             listener.afterSweep(substep, it);
         }
         if (bounded) sumEndEnergy(0, 1);
+        chargeHands();
         withoutEnergyGain();
     }
 
@@ -475,6 +495,8 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
             x[k + 2] -= h2 * (gz + wi * f[k + 2]);
         }
         inverseH2 = 1 / h2;
+        markHeld();
+        for (int j = 0; j < heldCount; j++) System.arraycopy(attachments.target, 3 * heldBy[held[j]], x, 3 * held[j], 3);
         endMaterialKnown = stillIsLastEnd(substep);
         bounded = boundHolds();
         endMaterialSummed = bounded;
@@ -534,12 +556,50 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
         }
     }
 
-    /** Whether the still start's material energy is the last substep's end's: a later substep of the same step, no pin moved. */
+    /**
+     * Puts every held particle back on its hand's target after the projected blocks moved it: a grab leads its
+     * particle, as a pin does, so an iteration ends with it there (and the energy bound's still start is
+     * admissible). A projected row that pulled it away would otherwise fight the hand once per iteration, each
+     * round an impulse of m δx/h, and at a small substep that is speed from nowhere.
+     */
+    private void meetHeld() {
+        for (int i = 0, na = attachments.count(); i < na; i++) if (!(attachments.compliance(i) > 0)) attachments.project(i, particles, ctx);
+    }
+
+    /** {@link #heldBy} for this substep: each free particle's first hard attachment (several on one would disagree only where no step can meet them). */
+    private void markHeld() {
+        for (int j = 0; j < heldCount; j++) heldBy[held[j]] = -1;
+        heldCount = 0;
+        for (int i = 0, na = attachments.count(); i < na; i++) {
+            final int v = attachments.particle(i, 0);
+            if (!(attachments.compliance(i) > 0) && heldBy[v] < 0 && particles.w[v] != 0) { heldBy[v] = i; held[heldCount++] = v; }
+        }
+    }
+
+    /**
+     * Gives each hand the force it exerted: what keeps its particle on the target against the particle's
+     * inertia and the energies, −f = m(x − y)/h² + ∇E (the residual its own step would have taken out), added
+     * to what the projected blocks' pulls cost it ({@link #meetHeld}'s corrections), so the hand's work counts
+     * what it put into the cloth.
+     */
+    private void chargeHands() {
+        for (int j = 0; j < heldCount; j++) {
+            final int v = held[j];
+            attachments.addForce(heldBy[v], handForce[3 * v], handForce[3 * v + 1], handForce[3 * v + 2]);
+        }
+    }
+
+    /** Whether the still start's material energy is the last substep's end's: a later substep of the same step, no pin or held particle moved. */
     private boolean stillIsLastEnd(int substep) {
         if (substep == 0 || !endMaterialSummed) return false;
-        final double[] x = particles.x, prev = particles.prev, w = particles.w;
-        for (int v = 0; v < n; v++)
-            if (w[v] == 0 && (x[3 * v] != prev[3 * v] || x[3 * v + 1] != prev[3 * v + 1] || x[3 * v + 2] != prev[3 * v + 2])) return false;
+        final double[] x = particles.x, prev = particles.prev, w = particles.w, t = attachments.target;
+        for (int v = 0; v < n; v++) {
+            final int k = 3 * v, hand = heldBy[v];
+            if (hand >= 0) {
+                final int j = 3 * hand;
+                if (t[j] != prev[k] || t[j + 1] != prev[k + 1] || t[j + 2] != prev[k + 2]) return false;
+            } else if (w[v] == 0 && (x[k] != prev[k] || x[k + 1] != prev[k + 1] || x[k + 2] != prev[k + 2])) return false;
+        }
         return true;
     }
 
@@ -619,7 +679,7 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
             // put has: no speed can pay for that, so the substep is undone (the cloth rests where it began) and
             // the next ones choose their start.
             for (int v = 0; v < n; v++) {
-                if (w[v] == 0) continue;
+                if (w[v] == 0 || heldBy[v] >= 0) continue;
                 for (int k = 3 * v; k < 3 * v + 3; k++) { x[k] = stillStart[k]; prev[k] = stillStart[k]; }
             }
             endMaterialSummed = false;
@@ -627,33 +687,36 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
         }
         final double scale = Math.sqrt(Math.max(0, budget - (end - kinetic)) / kinetic);
         for (int v = 0; v < n; v++) {
-            if (w[v] == 0) continue;
+            if (w[v] == 0 || heldBy[v] >= 0) continue;
             for (int k = 3 * v; k < 3 * v + 3; k++) prev[k] = x[k] - scale * (x[k] - prev[k]);
         }
     }
 
     /**
-     * Whether nothing outside the cloth works on it this substep: no hard attachment (a grab leads its
-     * particle) and no moving collider in contact.
+     * Whether the bound holds for the exact step: no moving collider in contact (its work on the cloth is not
+     * in G) and no enclosed gas. A hard attachment (a grab) does not lift it: its particle ends the substep on
+     * the target, so the still start with it there is admissible, and the bound is then the free particles'
+     * (see {@link #energyChunk}).
      */
     private boolean boundHolds() {
         if (gases.count() > 0) return false; // a gas's energy, p₀V − nRT ln V, is not in G: its work would read as a gain
-        for (int i = 0, na = attachments.count(); i < na; i++) if (!(attachments.compliance(i) > 0)) return false;
         for (int k = 0, nc = contacts.count(); k < nc; k++) if (contacts.with(k).moving()) return false;
         return true;
     }
 
     /**
      * Share {@code id} of {@code shares} of the still start, where G(x_prev) = ½|ṽ|²_M + E(x_prev) is summed:
-     * the free particles where the substep began, the pinned where they are now (a kinematic pin's work is in
-     * G then). Every share is placed before any energy is summed (the team waits between).
+     * the free particles where the substep began, the pinned where they are now and the held on their targets
+     * (a kinematic pin's or a hand's work is in G then). Every share is placed before any energy is summed
+     * (the team waits between).
      */
     private void placeStill(int id, int shares) {
-        final double[] x = particles.x, w = particles.w, prev = particles.prev, still = stillStart;
+        final double[] x = particles.x, w = particles.w, prev = particles.prev, still = stillStart, t = attachments.target;
         for (int v = share(n, id, shares), end = share(n, id + 1, shares); v < end; v++) {
-            final double[] from = w[v] != 0 ? prev : x;
-            final int k = 3 * v;
-            still[k] = from[k]; still[k + 1] = from[k + 1]; still[k + 2] = from[k + 2];
+            final int k = 3 * v, hand = heldBy[v];
+            final double[] from = hand >= 0 ? t : w[v] != 0 ? prev : x;
+            final int j = hand >= 0 ? 3 * hand : k;
+            still[k] = from[j]; still[k + 1] = from[j + 1]; still[k + 2] = from[j + 2];
         }
     }
 
@@ -662,7 +725,10 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
 
     /**
      * Chunk {@code id} of {@link #CHUNKS} of the step's energy at positions x about a: the free particles'
-     * inertia Σ mᵢ|xᵢ − aᵢ|²/(2h²) (also written to {@code inertiaOut[id]} when given), the material's energy
+     * inertia Σ mᵢ|xᵢ − aᵢ|²/(2h²) (also written to {@code inertiaOut[id]} when given; not a held particle's:
+     * it is on its target both at the still start z and at the exact step's end x', so its inertia is the same
+     * on both sides of G(x') + ½|z − x'|²_M/h² ≤ G(z) and cancels, leaving the free particles'
+     * ½|v'|²_M + E(x') ≤ ½|ṽ|²_M + E(z)), the material's energy
      * ({@code material}, from {@link #materialChunk}), the compliant attachments' and the penalties of the
      * listed pair contacts. Friction dissipates, and solids and the projected blocks are met exactly: they have
      * no energy here. The chunks sum to the whole.
@@ -673,7 +739,7 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
         final int from = share(n, id, shares), to = share(n, id + 1, shares);
         double inertial = 0, elastic = 0;
         for (int v = from; v < to; v++) {
-            if (w[v] == 0) continue;
+            if (w[v] == 0 || heldBy[v] >= 0) continue;
             final int k = 3 * v;
             double dx = x[k] - about[k], dy = x[k + 1] - about[k + 1], dz = x[k + 2] - about[k + 2];
             inertial += (dx * dx + dy * dy + dz * dz) / w[v];
@@ -768,6 +834,7 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
             if (id == 0) {
                 rest.sweep(particles, ctx);
                 gases.project(particles);
+                meetHeld();
             }
             t.await();
         }
@@ -873,7 +940,7 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
             h01 += along * nx * ny; h02 += along * nx * nz; h12 += along * ny * nz;
         }
 
-        // Compliant attachments, U = ½|x − t|²/α (a hard one is met after the step).
+        // Compliant attachments, U = ½|x − t|²/α (a hard one holds its particle: heldBy).
         for (int e = attachedStart[v], end = attachedStart[v + 1]; e < end; e++) {
             final int i = attachedOf[e];
             final double alpha = attachments.compliance(i);
@@ -920,6 +987,10 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
             }
         }
 
+        if (heldBy[v] >= 0) { // the hand holds it on the target: it takes the force, the particle no step
+            handForce[kv] = -fx; handForce[kv + 1] = -fy; handForce[kv + 2] = -fz;
+            return;
+        }
         // H Δ = f by the symmetric 3 × 3 inverse (H is positive definite: inertia plus positive terms).
         double c00 = h11 * h22 - h12 * h12, c01 = h02 * h12 - h01 * h22, c02 = h01 * h12 - h02 * h11;
         double det = h00 * c00 + h01 * c01 + h02 * c02;
@@ -930,10 +1001,7 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
         double step = Math.sqrt(dx * dx + dy * dy + dz * dz), limit = stepLimit[v];
         if (step > limit) { double scale = limit / step; dx *= scale; dy *= scale; dz *= scale; }
         x[kv] += dx; x[kv + 1] += dy; x[kv + 2] += dz;
-        // Its hard attachments and contacts with solids at once, so the particles solved after it never see it
-        // off its target or inside a solid.
-        for (int e = attachedStart[v], end = attachedStart[v + 1]; e < end; e++)
-            if (!(attachments.compliance(attachedOf[e]) > 0)) attachments.project(attachedOf[e], particles, ctx);
+        // Its contacts with solids at once, so the particles solved after it never see it inside a solid.
         for (int e = contactStart[v], end = contactStart[v + 1]; e < end; e++) {
             final int k = contactOf[e];
             final Collider with = contacts.with(k);
