@@ -9,7 +9,6 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
-import org.junit.jupiter.api.parallel.Isolated;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -19,8 +18,6 @@ import org.junit.jupiter.api.io.TempDir;
  * The right particle is taken, it stays under the pointer, and it leaves with the drag's speed. Then the
  * sketch's controls through the library's own methods reach the engine, and a bad value is refused by name.
  */
-// It launches a JVM that must finish under a deadline: it runs alone, not beside another test class.
-@Isolated
 class ClothViewTest {
     @Test
     void grabsTheParticleUnderThePointerFollowsItAndThrows(@TempDir Path out) throws Exception {

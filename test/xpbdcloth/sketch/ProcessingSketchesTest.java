@@ -19,7 +19,6 @@ import javax.tools.JavaCompiler;
 import javax.tools.JavaFileObject;
 import javax.tools.StandardJavaFileManager;
 import javax.tools.ToolProvider;
-import org.junit.jupiter.api.parallel.Isolated;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -36,8 +35,6 @@ import processing.mode.java.preproc.PreprocessorResult;
  * must show a cloth, and it must move. A sketch that does not preprocess or compile fails with the
  * preprocessor's or the compiler's own message.
  */
-// It launches a JVM that must finish under a deadline: it runs alone, not beside another test class.
-@Isolated
 @Tag("slow")
 class ProcessingSketchesTest {
     static final Path LIBRARY = Path.of("build/processing-library/xpbdcloth");

@@ -9,7 +9,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
 import javax.imageio.ImageIO;
-import org.junit.jupiter.api.parallel.Isolated;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
@@ -19,8 +18,6 @@ import org.junit.jupiter.params.provider.ValueSource;
  * the frame and the scene moves between the first and last frame. Needs a display: CI runs the tests
  * under xvfb-run; without one the test is skipped locally and fails under CI=true.
  */
-// It launches a JVM that must finish under a deadline: it runs alone, not beside another test class.
-@Isolated
 @Tag("slow")
 public class RecordingSmokeTest {
     static final int FRAMES = 20;

@@ -9,7 +9,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import org.junit.jupiter.api.parallel.Isolated;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -21,8 +20,6 @@ import org.junit.jupiter.api.io.TempDir;
  * (x, y, z) is (x, −z, y)), and each collider an object that moves with the engine's pose. Skipped where
  * Blender is not installed.
  */
-// It launches a JVM that must finish under a deadline: it runs alone, not beside another test class.
-@Isolated
 class BlenderImportsRecordingTest {
     static final Path BLENDER_PYTHON = Path.of(".venv-blender/bin/python");
 
