@@ -34,6 +34,14 @@ final class ContactSet {
     private int[] countedIn = new int[0];
     private int insideCalls;
 
+    /**
+     * Per particle (xyz interleaved): how far the colliders' projections moved it in this substep's solve, m,
+     * for their work ({@link #countWork}); back to 0 for every particle once counted.
+     */
+    private double[] moved = new double[0];
+    /** The work the colliders have done on the cloth so far, J. */
+    private double work;
+
     /** The self-collision of the last collide stage, or null: its pairs are among the contacts. */
     private SelfCollision self;
 
@@ -47,6 +55,7 @@ final class ContactSet {
     void reserve(int particles, int colliders) {
         int n = particles * colliders;
         if (particle.length < n) { particle = new int[n]; entry = new int[n]; with = new Collider[n]; }
+        if (moved.length < 3 * particles) moved = new double[3 * particles];
     }
 
     /**
@@ -54,6 +63,8 @@ final class ContactSet {
      * placed colliders; the self-collision's list is made by the team's threads when there is one.
      */
     void collide(Particles p, List<Sphere> spheres, List<Plane> planes, List<RigidCollider> solids, SelfCollision self, double h, Team team) {
+        // A step that threw leaves its last substep's moves uncounted: they are not this substep's.
+        for (int k = 0; k < count; k++) if (with[k] != this.self) { int k3 = 3 * particle[k]; moved[k3] = 0; moved[k3 + 1] = 0; moved[k3 + 2] = 0; }
         count = 0;
         this.self = self;
         for (int s = 0, ns = spheres.size(); s < ns; s++) spheres.get(s).findContacts(p, h, this);
@@ -111,9 +122,31 @@ final class ContactSet {
      */
     void project(Particles p, SolverContext ctx) {
         long t0 = System.nanoTime();
-        for (int k = 0; k < count; k++) with[k].project(p, entry[k], ctx.h);
+        for (int k = 0; k < count; k++) project(p, ctx, k);
         projectNanos += System.nanoTime() - t0;
     }
+
+    /**
+     * After a substep's solve: the colliders' work on the cloth, each particle's mass times what they moved it
+     * by over h² (the force of their impulses, as an attachment's is counted) dotted with its move in the
+     * substep, F·Δx. A moving solid's push and its friction's drag put energy in; a fixed one's stops take it out.
+     * The cloth's pairs with itself are internal forces and do none.
+     */
+    void countWork(Particles p, double h) {
+        double w = 0, inverseH2 = 1 / (h * h);
+        for (int k = 0; k < count; k++) {
+            if (with[k] == self) continue; // the cloth's own pairs: internal forces
+            int k3 = 3 * particle[k];
+            double mx = moved[k3], my = moved[k3 + 1], mz = moved[k3 + 2];
+            if (mx == 0 && my == 0 && mz == 0) continue; // untouched, or counted already
+            w += (mx * (p.x[k3] - p.prev[k3]) + my * (p.x[k3 + 1] - p.prev[k3 + 1]) + mz * (p.x[k3 + 2] - p.prev[k3 + 2])) * inverseH2 / p.w[particle[k]];
+            moved[k3] = 0; moved[k3 + 1] = 0; moved[k3 + 2] = 0;
+        }
+        work += w;
+    }
+
+    /** What the colliders (not the cloth's own pairs) have done on the cloth since this set was made, J ({@link #countWork}). */
+    double work() { return work; }
 
     /**
      * Particles now inside a collider's surface by more than a tenth of its margin (clearance below −1.1
@@ -169,10 +202,20 @@ final class ContactSet {
     }
 
     /** Contact k's projection moving only {@code particle} (one of its particles). */
-    void projectOne(Particles p, int k, int particle, double h) { with[k].projectOne(p, entry[k], particle, h); }
+    void projectOne(Particles p, int k, int particle, double h) {
+        if (with[k] == self) { with[k].projectOne(p, entry[k], particle, h); return; }
+        int k3 = 3 * particle;
+        double x = p.x[k3], y = p.x[k3 + 1], z = p.x[k3 + 2];
+        with[k].projectOne(p, entry[k], particle, h);
+        moved[k3] += p.x[k3] - x; moved[k3 + 1] += p.x[k3 + 1] - y; moved[k3 + 2] += p.x[k3 + 2] - z;
+    }
 
-    /** Contact k alone (the probe's replay checks after each). */
+    /** Contact k alone (the probe's replay checks after each); a collider's move of its particle is kept for its work. */
     void project(Particles p, SolverContext ctx, int k) {
+        if (with[k] == self) { with[k].project(p, entry[k], ctx.h); return; }
+        int k3 = 3 * particle[k];
+        double x = p.x[k3], y = p.x[k3 + 1], z = p.x[k3 + 2];
         with[k].project(p, entry[k], ctx.h);
+        moved[k3] += p.x[k3] - x; moved[k3 + 1] += p.x[k3 + 1] - y; moved[k3 + 2] += p.x[k3 + 2] - z;
     }
 }

@@ -222,6 +222,13 @@ public final class Simulation {
      */
     public double workByAttachments() { return constraints.attachments().work(); }
 
+    /**
+     * The work the colliders (spheres, planes, boxes, capsules, meshes; their pushes and their friction) have
+     * done on the cloth since the simulation began, J: each substep, the force of their projections on a
+     * particle times its move ({@code ContactSet.countWork}), as {@link #workByAttachments} counts a hand's.
+     */
+    public double workByColliders() { return contacts.work(); }
+
     /** Sets PBD stiffness k for every constraint of a family. */
     public void setStiffness(ConstraintFamily family, double k) { constraints.setStiffness(family, k); }
 
@@ -308,6 +315,7 @@ public final class Simulation {
                 collideNanos += System.nanoTime() - g0;
             }
             attachments.countWork(particles);
+            contacts.countWork(particles, h);
             observer.after(Stage.SOLVE);
             Integrator.updateVelocities(particles, h);
             observer.after(Stage.UPDATE_VELOCITIES);

@@ -55,8 +55,8 @@ public final class Fuzz implements Callable<Integer> {
 
     /**
      * The same; with {@code plausible}, a case whose kinetic energy exceeds what gravity and its drivers can
-     * have given ({@link Plausibility}) fails too. Not yet part of the pass: it finds cases the engine does
-     * not meet (docs/robustness.md).
+     * have given ({@link Plausibility}) fails too. The CI cases run with it; from seeds beyond them it still
+     * finds cases vertex block descent does not meet (docs/robustness.md).
      */
     public static String runCase(long seed, SolverType solver, boolean plausible) {
         Random r = new Random(seed);
