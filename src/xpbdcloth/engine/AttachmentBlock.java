@@ -81,6 +81,9 @@ public final class AttachmentBlock extends ConstraintBlock {
         force[3 * i] += fx; force[3 * i + 1] += fy; force[3 * i + 2] += fz;
     }
 
+    /** Forgets this substep's forces so far (a solve that is redone). */
+    void forgetForces() { Arrays.fill(force, 0, 3 * count, 0); }
+
     /** After a substep's solve: adds F·Δx (Δx = x − x_prev, the particle's move in the substep) to the work, and starts the next substep's force at 0. */
     void countWork(Particles p) {
         double w = 0;

@@ -63,8 +63,7 @@ final class ContactSet {
      * placed colliders; the self-collision's list is made by the team's threads when there is one.
      */
     void collide(Particles p, List<Sphere> spheres, List<Plane> planes, List<RigidCollider> solids, SelfCollision self, double h, Team team) {
-        // A step that threw leaves its last substep's moves uncounted: they are not this substep's.
-        for (int k = 0; k < count; k++) if (with[k] != this.self) { int k3 = 3 * particle[k]; moved[k3] = 0; moved[k3 + 1] = 0; moved[k3 + 2] = 0; }
+        forgetMoves(); // a step that threw leaves its last substep's moves uncounted: they are not this substep's
         count = 0;
         this.self = self;
         for (int s = 0, ns = spheres.size(); s < ns; s++) spheres.get(s).findContacts(p, h, this);
@@ -143,6 +142,23 @@ final class ContactSet {
             moved[k3] = 0; moved[k3 + 1] = 0; moved[k3 + 2] = 0;
         }
         work += w;
+    }
+
+    /** Forgets what the projections moved the particles by in this substep (a solve that is redone). */
+    void forgetMoves() {
+        for (int k = 0; k < count; k++) if (with[k] != this.self) { int k3 = 3 * particle[k]; moved[k3] = 0; moved[k3 + 1] = 0; moved[k3 + 2] = 0; }
+    }
+
+    /** What {@link #countWork} would add now, J, without counting it: the colliders' work in this substep's solve so far. */
+    double workInSubstep(Particles p, double h) {
+        double w = 0, inverseH2 = 1 / (h * h);
+        for (int i = 0, n = p.count(); i < n; i++) {
+            int k3 = 3 * i;
+            double mx = moved[k3], my = moved[k3 + 1], mz = moved[k3 + 2];
+            if (mx == 0 && my == 0 && mz == 0) continue;
+            w += (mx * (p.x[k3] - p.prev[k3]) + my * (p.x[k3 + 1] - p.prev[k3 + 1]) + mz * (p.x[k3 + 2] - p.prev[k3 + 2])) * inverseH2 / p.w[i];
+        }
+        return w;
     }
 
     /** What the colliders (not the cloth's own pairs) have done on the cloth since this set was made, J ({@link #countWork}). */

@@ -56,7 +56,8 @@ final class SolveStages {
         // The team runs a substep's sweeps in one go, so a listener to single sweeps gets a sequential stage.
         Team helpers = listener == SweepListener.NONE ? team(threads) : null;
         if (type == SolverType.VERTEX_BLOCK_DESCENT) {
-            stage = new VertexBlockDescent(constraints.cloth(), attachments, particles, ctx, gases, contacts, listener, helpers);
+            SequentialSweeps gaussSeidel = new SequentialSweeps(constraints.order(), particles, ctx, gases, contacts, listener);
+            stage = new VertexBlockDescent(constraints.cloth(), attachments, particles, ctx, gases, contacts, listener, helpers, gaussSeidel);
         } else if (g != null) {
             List<ConstraintBlock> local = new ArrayList<>();
             for (ConstraintBlock blk : constraints.cloth()) if (!GlobalSolver.takes(blk)) local.add(blk);
