@@ -132,16 +132,8 @@ final class ContactSet {
      * The cloth's pairs with itself are internal forces and do none.
      */
     void countWork(Particles p, double h) {
-        double w = 0, inverseH2 = 1 / (h * h);
-        for (int k = 0; k < count; k++) {
-            if (with[k] == self) continue; // the cloth's own pairs: internal forces
-            int k3 = 3 * particle[k];
-            double mx = moved[k3], my = moved[k3 + 1], mz = moved[k3 + 2];
-            if (mx == 0 && my == 0 && mz == 0) continue; // untouched, or counted already
-            w += (mx * (p.x[k3] - p.prev[k3]) + my * (p.x[k3 + 1] - p.prev[k3 + 1]) + mz * (p.x[k3 + 2] - p.prev[k3 + 2])) * inverseH2 / p.w[particle[k]];
-            moved[k3] = 0; moved[k3 + 1] = 0; moved[k3 + 2] = 0;
-        }
-        work += w;
+        work += workInSubstep(p, h);
+        forgetMoves();
     }
 
     /** Forgets what the projections moved the particles by in this substep (a solve that is redone). */
@@ -149,10 +141,15 @@ final class ContactSet {
         for (int k = 0; k < count; k++) if (with[k] != this.self) { int k3 = 3 * particle[k]; moved[k3] = 0; moved[k3 + 1] = 0; moved[k3 + 2] = 0; }
     }
 
-    /** What {@link #countWork} would add now, J, without counting it: the colliders' work in this substep's solve so far. */
+    /**
+     * What {@link #countWork} adds, J, without counting it: the colliders' work in this substep's solve so far.
+     * Per particle, not per contact, so a particle that two colliders moved is counted once. Only colliders'
+     * projections write {@link #moved}; the cloth's own pairs do not.
+     */
     double workInSubstep(Particles p, double h) {
+        if (count == 0) return 0; // nothing touched: every move was forgotten when the contacts were found
         double w = 0, inverseH2 = 1 / (h * h);
-        for (int i = 0, n = p.count(); i < n; i++) {
+        for (int i = 0, n = Math.min(p.count(), moved.length / 3); i < n; i++) {
             int k3 = 3 * i;
             double mx = moved[k3], my = moved[k3 + 1], mz = moved[k3 + 2];
             if (mx == 0 && my == 0 && mz == 0) continue;
