@@ -51,16 +51,26 @@ public final class BandedMatrix {
         for (int i = 0; i < n; i++) maxDiag = Math.max(maxDiag, lower[at(i, i)]);
         double floor = 1e-14 * maxDiag;
         for (int i = 0; i < n; i++) {
-            int j0 = Math.max(0, i - band);
+            int j0 = Math.max(0, i - band), ri = at(i, 0); // (i, k) is lower[ri + k] for k in the band
             for (int j = j0; j <= i; j++) {
-                int k0 = Math.max(j0, Math.max(0, j - band));
-                double s = lower[at(i, j)];
-                for (int k = k0; k < j; k++) s -= lower[at(i, k)] * lower[at(j, k)];
+                int rj = at(j, 0), k0 = Math.max(j0, j - band);
+                // Four running sums: one waits on each of its additions in turn (the floating-point adder's
+                // latency), four keep it busy; the band's dot products are nearly all of a factorisation's work.
+                double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+                int k = k0;
+                for (; k + 3 < j; k += 4) {
+                    s0 += lower[ri + k] * lower[rj + k];
+                    s1 += lower[ri + k + 1] * lower[rj + k + 1];
+                    s2 += lower[ri + k + 2] * lower[rj + k + 2];
+                    s3 += lower[ri + k + 3] * lower[rj + k + 3];
+                }
+                for (; k < j; k++) s0 += lower[ri + k] * lower[rj + k];
+                double s = lower[ri + j] - ((s0 + s1) + (s2 + s3));
                 if (j == i) {
                     if (!(s > floor)) return false;
-                    lower[at(i, i)] = Math.sqrt(s);
+                    lower[ri + i] = Math.sqrt(s);
                 } else {
-                    lower[at(i, j)] = s / lower[at(j, j)];
+                    lower[ri + j] = s / lower[rj + j];
                 }
             }
         }
