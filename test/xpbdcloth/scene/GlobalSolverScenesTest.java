@@ -14,17 +14,18 @@ import xpbdcloth.engine.Simulation;
 import xpbdcloth.engine.SolverType;
 
 /**
- * The first five scenes, as shipped, under each global solver for 3000 steps (a minute of simulated
- * time): every step finite, no structural edge stretched by a quarter (the rope, the softest, peaks at
- * 12 %, the spinning sphere at 11 %), and no energy creeping in: the kinetic energy of the last 1000
- * steps stays below the largest of the first 2000 (a growing mode would do the opposite).
+ * The first five scenes, as shipped, under each global solver for 1500 steps (30 s of simulated time; the
+ * scripted pins and the passing sphere are done with the cloth by 7 s): every step finite, no structural edge stretched
+ * by a quarter (the rope, the softest, peaks at 12 %, the spinning sphere at 11 %), and no energy creeping
+ * in: the kinetic energy of the last 500 steps stays below the largest of the first 1000 (a growing mode
+ * would do the opposite).
  */
 @Tag("slow")
 class GlobalSolverScenesTest {
     static final List<String> FIRST_FIVE = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere");
-    static final int STEPS = 3000;
+    static final int STEPS = 1500, LATE = 500;
 
-    /** {peak strain, largest kinetic energy in the first 2000 steps, largest in the last 1000}, or a message. */
+    /** {peak strain, largest kinetic energy before the last LATE steps, largest in them}, or a message. */
     static Object run(String scene, SolverType type) {
         Simulation sim = Scene.builtIn(scene).simulation();
         sim.settings(sim.settings().withSolver(type));
@@ -34,7 +35,7 @@ class GlobalSolverScenesTest {
             double strain = Metrics.maxStrain(sim, ConstraintFamily.STRUCTURAL), ke = Metrics.kineticEnergy(sim.particles());
             if (!Metrics.allFinite(sim.particles()) || !Double.isFinite(ke)) return scene + " under " + type + ": not finite at step " + k;
             peak = Math.max(peak, strain);
-            if (k < STEPS - 1000) early = Math.max(early, ke);
+            if (k < STEPS - LATE) early = Math.max(early, ke);
             else late = Math.max(late, ke);
         }
         return new double[] {peak, early, late};
@@ -42,7 +43,7 @@ class GlobalSolverScenesTest {
 
     @Test
     void theFirstFiveScenesStayStableUnderEitherGlobalSolver() throws Exception {
-        // Ten runs of about a minute each: two at a time.
+        // Ten runs of half a minute each: two at a time.
         List<Callable<Object>> runs = new ArrayList<>();
         List<String> names = new ArrayList<>();
         for (String scene : FIRST_FIVE)
@@ -56,8 +57,8 @@ class GlobalSolverScenesTest {
             Object r = results.get(i);
             if (r instanceof String) { failures.add((String) r); continue; }
             double[] v = (double[]) r;
-            System.out.printf("%s, %d steps: peak strain %.4f, largest kinetic energy %.3e J in the first %d steps, %.3e J in the last 1000%n",
-                    names.get(i), STEPS, v[0], v[1], STEPS - 1000, v[2]);
+            System.out.printf("%s, %d steps: peak strain %.4f, largest kinetic energy %.3e J in the first %d steps, %.3e J in the last %d%n",
+                    names.get(i), STEPS, v[0], v[1], STEPS - LATE, v[2], LATE);
             if (!(v[0] < 0.25)) failures.add(names.get(i) + ": peak strain " + v[0]);
             if (!(v[2] <= v[1])) failures.add(names.get(i) + ": kinetic energy grew late, " + v[2] + " J after " + v[1] + " J");
         }
