@@ -61,7 +61,9 @@ final class TriangleGrid {
         if (bucketStart.length < needed + 1) bucketStart = new int[needed + 1];
         else Arrays.fill(bucketStart, 0);
         final int table = bucketStart.length - 1;
-        if (listed.length < entries) listed = new int[(int) entries];
+        // Grown to at least twice what it held: a cloth whose reaches widen a little at a time (a garment carried
+        // round by a turning body) would otherwise make a new list, of the whole size, at every new largest.
+        if (listed.length < entries) listed = new int[(int) Math.min(Integer.MAX_VALUE - 8, Math.max(entries, 2L * listed.length))];
         for (int pass = 0; pass < 2; pass++) {
             for (int t = 0; t < count; t++) {
                 final int b = 6 * t;
