@@ -3,7 +3,7 @@ package xpbdcloth.engine;
 /**
  * A kinematic triangle mesh the cloth cannot pass (a body, a chair, a thin plate): open or closed, still,
  * on a rigid path like the other solids, or animated by frames of its vertices (same triangles; linear
- * between frames, played at {@code fps}, looped or held at the last). The pose of its vertices is a
+ * between frames, played at {@code fps} from a start time, looped or held at the last). The pose of its vertices is a
  * function of time alone, so a step rolled back needs nothing restored.
  *
  * <p><b>Contact</b> of particle i with triangle t, on the side s = ±1 the particle is on (a closed mesh's
@@ -44,6 +44,8 @@ public final class MeshCollider extends RigidCollider {
     private final double[][] frames;
     private final double fps;
     private final boolean loop;
+    /** The time (s) the frames start to play; before it the mesh holds its first frame. */
+    private final double playFrom;
     private final boolean closed;
     private final double boundingRadius;
     /** World vertices at the substep's start and now; the local pose now. */
@@ -85,7 +87,17 @@ public final class MeshCollider extends RigidCollider {
      */
     public MeshCollider(SpherePath path, double[] vertices, int[] triangles, double[][] frames, double fps, boolean loop,
                         double margin, double staticFriction, double kineticFriction) {
+        this(path, vertices, triangles, frames, fps, loop, 0, margin, staticFriction, kineticFriction);
+    }
+
+    /**
+     * The same, with the frames played from time {@code playFrom} (s, ≥ 0) on: before it the mesh holds its first
+     * frame (a body that stands still while a garment is sewn onto it, then moves).
+     */
+    public MeshCollider(SpherePath path, double[] vertices, int[] triangles, double[][] frames, double fps, boolean loop, double playFrom,
+                        double margin, double staticFriction, double kineticFriction) {
         super(path, Rotation.identity(), margin, staticFriction, kineticFriction);
+        Check.nonNegative("playFrom", playFrom);
         if (vertices == null || vertices.length == 0 || vertices.length % 3 != 0)
             throw new IllegalArgumentException("vertices must be 3 numbers per vertex, at least one vertex, was " + (vertices == null ? "null" : vertices.length + " numbers"));
         if (triangles == null || triangles.length == 0 || triangles.length % 3 != 0)
@@ -112,6 +124,7 @@ public final class MeshCollider extends RigidCollider {
         }
         this.fps = fps;
         this.loop = loop;
+        this.playFrom = playFrom;
         // Whether every edge has exactly two triangles (closed: it has an inside); a closed mesh wound inwards
         // is turned so that every normal points out.
         this.triangles = triangles.clone();
@@ -194,7 +207,7 @@ public final class MeshCollider extends RigidCollider {
         double[] v = localRest;
         if (frames != null) {
             int n = frames.length;
-            double f = t * fps;
+            double f = Math.max(0, t - playFrom) * fps;
             if (loop) f = ((f % n) + n) % n;
             else f = Math.max(0, Math.min(n - 1, f));
             int i = (int) Math.floor(f);

@@ -36,17 +36,17 @@ public final class Mannequin {
     }
 
     /**
-     * The figure turning on the spot, 60° to its left and to its right and back, in {@code frames} frames (a
-     * loop: the frame after the last is the first), arms at 10°: vertex positions per frame, the triangles of
-     * {@link #generate}'s mesh. A turn and not a raising of the arms: an arm closing on the torso, or rising
-     * against the shoulder, pinches cloth between two overlapping parts of the body, which the contact cannot
-     * yet resolve (docs/contacts.md).
+     * The figure with its arms at {@code armDegrees} turning on the spot, {@code turnDegrees} to its left and to
+     * its right and back, in {@code frames} frames (a loop: the frame after the last is the first): vertex
+     * positions per frame, the triangles of {@link #generate}'s mesh. A turn and not a raising of the arms: an
+     * arm closing on the torso, or rising against the shoulder, pinches cloth between two overlapping parts of
+     * the body, which the contact cannot yet resolve (docs/contacts.md).
      */
-    public static double[][] turning(int frames) {
-        double[] rest = generate(10).positions();
+    public static double[][] turning(double armDegrees, double turnDegrees, int frames) {
+        double[] rest = generate(armDegrees).positions();
         double[][] out = new double[frames][];
         for (int f = 0; f < frames; f++) {
-            double a = Math.toRadians(60) * Math.sin(2 * Math.PI * f / frames), c = Math.cos(a), s = Math.sin(a);
+            double a = Math.toRadians(turnDegrees) * Math.sin(2 * Math.PI * f / frames), c = Math.cos(a), s = Math.sin(a);
             double[] p = rest.clone();
             for (int i = 0; i < p.length; i += 3) {
                 double x = rest[i], z = rest[i + 2];

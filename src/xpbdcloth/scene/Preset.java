@@ -87,18 +87,22 @@ public final class Preset {
         }
     }
 
-    /** A triangle mesh to collide with: the file's body as placed, whether its frames loop, friction, and a rigid path and spin. */
+    /**
+     * A triangle mesh to collide with: the file's body as placed, when its frames start to play (s) and whether
+     * they loop, friction, and a rigid path and spin.
+     */
     public static final class BodySpec {
         public final String file;
         public final xpbdcloth.mesh.BodyMesh mesh;
+        public final double start;
         public final boolean loop;
         public final double margin, staticFriction, kineticFriction, depenetrationSpeed;
         public final double[] angularVelocity;
         public final PathSpec path;
 
-        BodySpec(String file, xpbdcloth.mesh.BodyMesh mesh, boolean loop, double margin, double staticFriction, double kineticFriction, double[] angularVelocity, PathSpec path,
+        BodySpec(String file, xpbdcloth.mesh.BodyMesh mesh, double start, boolean loop, double margin, double staticFriction, double kineticFriction, double[] angularVelocity, PathSpec path,
                  double depenetrationSpeed) {
-            this.file = file; this.mesh = mesh; this.loop = loop; this.margin = margin; this.staticFriction = staticFriction;
+            this.file = file; this.mesh = mesh; this.start = start; this.loop = loop; this.margin = margin; this.staticFriction = staticFriction;
             this.kineticFriction = kineticFriction; this.angularVelocity = angularVelocity; this.path = path; this.depenetrationSpeed = depenetrationSpeed;
         }
     }

@@ -36,7 +36,7 @@ import xpbdcloth.mesh.UsdaReader;
  */
 public final class PresetLoader {
     /** The presets that ship with the project, in the order the sketch offers them. */
-    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth", "table", "arm", "drop-fold", "fabric", "flag-fabric", "drape", "denim-fold", "mannequin-poncho", "mannequin-turn", "torus-spin", "crease", "pillow", "balloon", "skirt", "tshirt", "bordered-tablecloth", "drape-tester", "tear", "rip");
+    public static final List<String> BUILT_IN = List.of("hanging", "corners", "sphere-pass", "rope", "spinning-sphere", "curtain", "flag", "tablecloth", "table", "arm", "drop-fold", "fabric", "flag-fabric", "drape", "denim-fold", "mannequin-poncho", "mannequin-turn", "torus-spin", "crease", "pillow", "balloon", "skirt", "tshirt", "tshirt-turn", "bordered-tablecloth", "drape-tester", "tear", "rip");
 
     private PresetLoader() {}
 
@@ -792,16 +792,17 @@ public final class PresetLoader {
 
         /**
          * A triangle mesh to collide with, from a file (OBJ, USD text, or a folder of OBJ frames), placed by
-         * scale, rotation and translation; still, animated by its frames (fps, loop), and moved rigidly by a
+         * scale, rotation and translation; still, animated by its frames (fps, start, loop), and moved rigidly by a
          * path and spin about the path's start (default: fixed at the origin, the mesh where its file puts it).
          */
         Preset.BodySpec body(Node n) {
-            object(n, Set.of("type", "file", "fps", "loop", "scale", "rotation", "translation", "margin", "staticFriction", "kineticFriction", "angularVelocity", "path",
+            object(n, Set.of("type", "file", "fps", "start", "loop", "scale", "rotation", "translation", "margin", "staticFriction", "kineticFriction", "angularVelocity", "path",
                     "depenetrationSpeed"));
             Node f = required(n, "file");
             String name = string(f);
-            Node fp = optional(n, "fps"), lp = optional(n, "loop");
+            Node fp = optional(n, "fps"), sp = optional(n, "start"), lp = optional(n, "loop");
             double fps = fp == null ? Double.NaN : number(fp, Limits.FRAME_RATE);
+            double start = sp == null ? 0 : number(sp, Limits.START_TIME);
             boolean loop = lp != null && bool(lp);
             Placement at = placement(n);
             double mus = number(required(n, "staticFriction"), Limits.FRICTION);
@@ -814,13 +815,14 @@ public final class PresetLoader {
             if (body.animated() && fp != null) body = body.at(fps);
             if (!body.animated() && fp != null) throw fail(fp.path, "is the rate of an animated body's frames; " + name + " is still (one shape)");
             if (!body.animated() && lp != null) throw fail(lp.path, "loops an animated body's frames; " + name + " is still (one shape)");
+            if (!body.animated() && sp != null) throw fail(sp.path, "starts an animated body's frames; " + name + " is still (one shape)");
             body = body.transformed(at.scale, at.rotation, at.translation);
             double[][] shapes = body.animated() ? body.frames : new double[][] {body.vertices};
             for (int k = 0; k < shapes.length; k++)
                 for (int i = 0; i < shapes[k].length; i++)
                     if (!Limits.POSITION.contains(shapes[k][i]))
                         throw fail(n.path, "vertex " + i / 3 + (body.animated() ? " of frame " + k : "") + " lands at " + shapes[k][i] + " on axis " + "xyz".charAt(i % 3) + ", outside " + Limits.POSITION.text() + " m");
-            return new Preset.BodySpec(name, body, loop, margin(n), mus, muk, omega, path, depenetrationSpeed(n));
+            return new Preset.BodySpec(name, body, start, loop, margin(n), mus, muk, omega, path, depenetrationSpeed(n));
         }
 
         /**

@@ -140,7 +140,7 @@ public final class Scene {
             simulation.add(solid.spin(sp.angularVelocity[0], sp.angularVelocity[1], sp.angularVelocity[2]));
         }
         for (Preset.BodySpec b : preset.bodies) {
-            MeshCollider body = new MeshCollider(path(b.path), b.mesh.vertices, b.mesh.triangles, b.mesh.frames, b.mesh.fps, b.loop, b.margin, b.staticFriction, b.kineticFriction);
+            MeshCollider body = new MeshCollider(path(b.path), b.mesh.vertices, b.mesh.triangles, b.mesh.frames, b.mesh.fps, b.loop, b.start, b.margin, b.staticFriction, b.kineticFriction);
             body.depenetrationSpeed(b.depenetrationSpeed);
             simulation.add(body.spin(b.angularVelocity[0], b.angularVelocity[1], b.angularVelocity[2]));
         }

@@ -210,4 +210,33 @@ class MeshColliderTest {
         assertEquals(0.805 + MARGIN, mean, 2e-3);
         assertTrue(lowest >= MARGIN * 0.9, "lowest above the top: " + lowest);
     }
+
+    /**
+     * Frames played from a start: the plate of the test above, its rise starting at 0.5 s, holds its first frame
+     * until then and is then where the unstarted plate was 0.5 s earlier (linear between the frames).
+     */
+    @Test
+    void framesPlayFromTheirStart() {
+        double[][] low = boxMesh(0, 0.5, 0, 0.4, 0.005, 0.4), high = boxMesh(0, 0.8, 0, 0.4, 0.005, 0.4);
+        double[][] frames = {low[0], high[0]};
+        MeshCollider now = new MeshCollider(SpherePath.fixed(0, 0, 0), low[0], ints(low[1]), frames, 1, false, MARGIN, 0.5, 0.4);
+        MeshCollider later = new MeshCollider(SpherePath.fixed(0, 0, 0), low[0], ints(low[1]), frames, 1, false, 0.5, MARGIN, 0.5, 0.4);
+        later.moveTo(0.4);
+        assertArrayEquals(low[0], later.vertices(), 0, "the first frame, held before the start");
+        for (double t : new double[] {0.25, 0.5, 0.75}) {
+            now.moveTo(t);
+            later.moveTo(t + 0.5);
+            assertArrayEquals(now.vertices(), later.vertices(), 1e-15, "0.5 s later at " + t + " s");
+            assertEquals(0.505 + 0.3 * t, maxY(later.vertices()), 1e-12, "the plate's top");
+        }
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> new MeshCollider(SpherePath.fixed(0, 0, 0), low[0], ints(low[1]), frames, 1, false, -1, MARGIN, 0.5, 0.4));
+        assertTrue(e.getMessage().startsWith("playFrom must be"), e.getMessage());
+    }
+
+    private static double maxY(double[] v) {
+        double top = -Double.MAX_VALUE;
+        for (int k = 1; k < v.length; k += 3) top = Math.max(top, v[k]);
+        return top;
+    }
 }

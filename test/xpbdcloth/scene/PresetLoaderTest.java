@@ -281,6 +281,22 @@ class PresetLoaderTest {
         assertEquals("selfCollision.rebuildEvery", e.field(), e.getMessage());
     }
 
+    static final String TURNING_BODY = "{ \"type\": \"mesh\", \"file\": \"mannequin-turn.usda\", \"start\": 2.5, \"loop\": true, \"margin\": 0.005,"
+            + " \"staticFriction\": 0.6, \"kineticFriction\": 0.45 }";
+
+    /** An animated body's frames start to play at its "start"; a still body has none to start, and a start is a time, not below 0. */
+    @Test
+    void anAnimatedBodyStartsWhenItSays() {
+        Preset p = PresetLoader.parse("data/turning.json", withColliders(TURNING_BODY));
+        assertEquals(2.5, p.bodies.get(0).start);
+        assertEquals(0, PresetLoader.parse("data/turning.json", withColliders(TURNING_BODY.replace("\"start\": 2.5, ", ""))).bodies.get(0).start, "default: at once");
+        assertProblem(TURNING_BODY.replace("2.5", "-1"), "colliders[0].start", "must be in [0, 1000000] s");
+        PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse("data/still.json",
+                withColliders(TURNING_BODY.replace("mannequin-turn.usda", "torus.obj").replace("\"loop\": true, ", ""))));
+        assertEquals("colliders[0].start", e.field(), e.getMessage());
+        assertEquals("starts an animated body's frames; torus.obj is still (one shape)", e.problem());
+    }
+
     static void assertProblem(String collider, String field, String problemStart) {
         PresetException e = assertThrows(PresetException.class, () -> PresetLoader.parse("bad.json", withColliders(collider)));
         assertEquals(field, e.field(), e.getMessage());

@@ -314,12 +314,13 @@ final class PresetFuzz {
                 for (int k = 0; k < solids; k++) {
                     json.append(k == 0 ? "" : ", ");
                     int kind = r.nextInt(5);
-                    if (kind == 4) { // a triangle mesh: still, animated (its own rate or another, looped or held), placed anywhere
-                        String[] bodies = {"torus.obj", "mannequin.obj", "mannequin-turn.usda"};
+                    if (kind == 4) { // a triangle mesh: still, animated (its own rate or another, from a start, looped or held), placed anywhere
+                        String[] bodies = {"torus.obj", "mannequin.obj", "mannequin-turn.usda", "mannequin-a-pose-turn.usda"};
                         String body = bodies[r.nextInt(bodies.length)];
                         json.append("{ \"type\": \"mesh\", \"file\": \"").append(body).append('"');
                         if (body.endsWith(".usda") && r.nextBoolean()) json.append(", \"fps\": ").append(num(draw(Limits.FRAME_RATE, true)));
                         if (body.endsWith(".usda") && r.nextBoolean()) json.append(", \"loop\": ").append(r.nextBoolean());
+                        if (body.endsWith(".usda") && r.nextBoolean()) json.append(", \"start\": ").append(num(r.nextInt(4) == 0 ? 0 : draw(Limits.START_TIME, false) * 1e-5));
                         json.append(", \"scale\": ").append(num(Math.exp(r.nextDouble() * 2 - 1)))
                             .append(", \"rotation\": ").append(vec(Limits.ROTATION)) // a body of a few metres at most, kept inside the world's bounds
                             .append(", \"translation\": [").append(num(0.99 * draw(Limits.POSITION, false))).append(", ").append(num(0.99 * draw(Limits.POSITION, false)))
