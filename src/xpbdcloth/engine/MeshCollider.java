@@ -3,8 +3,8 @@ package xpbdcloth.engine;
 /**
  * A kinematic triangle mesh the cloth cannot pass (a body, a chair, a thin plate): open or closed, still,
  * on a rigid path like the other solids, or animated by frames of its vertices (same triangles; linear
- * between frames, played at {@code fps} from a start time, looped or held at the last). The pose of its vertices is a
- * function of time alone, so a step rolled back needs nothing restored.
+ * between frames, played at {@code fps} from a start time, looped or held at the last). The pose of its
+ * vertices is a function of time alone, so a step rolled back needs nothing restored.
  *
  * <p><b>Contact</b> of particle i with triangle t, on the side s = ±1 the particle is on (a closed mesh's
  * outside, taken from its outward normals; for an open mesh the side the particle started the substep on):
