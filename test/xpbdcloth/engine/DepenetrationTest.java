@@ -78,6 +78,7 @@ class DepenetrationTest {
         for (int i = 1; i < x.length; i += 3) lowest = Math.min(lowest, x[i]);
         assertTrue(lowest > 6 - 0.01, "every particle above the floor after 3 s: lowest " + lowest);
     }
+
     /**
      * Engine fuzz seed 1001636 as a plain cloth: a stiff PBD cloth (3 × 11 particles, 1.5 g, 29 sweeps of 14 µs
      * substeps) hanging with its bottom rows up to 31 cm inside a tilted floor with μₛ 1.18. While friction held
