@@ -55,21 +55,6 @@ public abstract class Collider {
         return Math.max(0, start - depenetrationSpeed * h);
     }
 
-    /**
-     * Coulomb's friction ({@link CoulombFriction}) on particle i after this collider moved it out by
-     * {@code correction} along n, unless it is still inside by {@code leftInside} &gt; 0 (m): friction is a law
-     * of the surface, and a particle found deeper than a substep's push-out can undo is not on it yet. Held
-     * sideways while it comes out at the depenetration speed, such a particle drags its neighbours across
-     * a stiff cloth, which buckles and is levered far faster than the push (engine fuzz seed 1001636: a PBD
-     * cloth whose bottom rows started inside a tilted floor went from 0.08 to 4 J in nine 14 µs substeps;
-     * docs/robustness.md). Once out, it rubs as any contact.
-     */
-    final void rub(Particles p, int i, double nx, double ny, double nz, double correction, double leftInside,
-                   double vsx, double vsy, double vsz, double h) {
-        if (leftInside > 0) return;
-        CoulombFriction.apply(p, i, nx, ny, nz, correction, vsx, vsy, vsz, h, staticFriction, kineticFriction);
-    }
-
     /** How far this collider has moved particle i's previous position out with it this substep. */
     private double undoneHere(Particles p, int i) { return p.depenetratedBy[i] == this ? p.depenetrated[i] : 0; }
 

@@ -432,11 +432,7 @@ public final class MeshCollider extends RigidCollider {
             double wgt = point[3 + corner] / h;
             vx += wgt * (now[v] - start[v]); vy += wgt * (now[v + 1] - start[v + 1]); vz += wgt * (now[v + 2] - start[v + 2]);
         }
-        // Friction whatever is left inside: a mesh contact's depth is taken against its one triangle (the body's
-        // parts overlap, and a crease's triangles face apart), so unlike an analytic solid's exact depth it does
-        // not say the particle is off the body's surface. Waiting for it to come out (rub) let the poncho's
-        // cloth slide to 0.1 mm of the mannequin, against 5.6 mm with friction.
-        rub(p, i, nx, ny, nz, correction, 0, vx, vy, vz, h);
+        CoulombFriction.apply(p, i, nx, ny, nz, correction, vx, vy, vz, h, staticFriction, kineticFriction);
     }
 
     @Override double clearance(Particles p, int j) {

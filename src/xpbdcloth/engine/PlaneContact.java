@@ -20,15 +20,14 @@ final class PlaneContact {
         final double[] x = p.x;
         final int k = 3 * i;
         double startDepth = s.margin - s.distance(p.prev[k], p.prev[k + 1], p.prev[k + 2]);
-        double left = s.leftInside(p, i, startDepth, h);
-        double C = s.distance(x[k], x[k + 1], x[k + 2]) - s.margin + left;
+        double C = s.distance(x[k], x[k + 1], x[k + 2]) - s.margin + s.leftInside(p, i, startDepth, h);
         double w = p.w[i];
         if (C >= 0 || w == 0) return 0;
         double dLambda = Constraint.hardDeltaLambda(C, w);
         double normalCorrection = w * dLambda; // = −C > 0
         x[k] += normalCorrection * s.nx; x[k + 1] += normalCorrection * s.ny; x[k + 2] += normalCorrection * s.nz;
         s.depenetrateWithoutVelocity(p, k, s.nx, s.ny, s.nz, normalCorrection, startDepth, h);
-        s.rub(p, i, s.nx, s.ny, s.nz, normalCorrection, left, 0, 0, 0, h);
+        CoulombFriction.apply(p, i, s.nx, s.ny, s.nz, normalCorrection, 0, 0, 0, h, s.staticFriction, s.kineticFriction);
         return dLambda;
     }
 }

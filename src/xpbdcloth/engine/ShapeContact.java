@@ -69,8 +69,7 @@ final class ShapeContact {
         // Out no faster than the depenetration speed from where it started inside (n is kept: the
         // distance at the start is taken into a scratch normal).
         double startDepth = -(s.distance(ax, ay, az, work[2]) - s.margin);
-        double left = s.leftInside(p, i, startDepth, h);
-        double normalCorrection = -fb - left;
+        double normalCorrection = -fb - s.leftInside(p, i, startDepth, h);
         if (normalCorrection <= 0) return;
         x[k] += normalCorrection * nx; x[k + 1] += normalCorrection * ny; x[k + 2] += normalCorrection * nz;
         s.depenetrateWithoutVelocity(p, k, nx, ny, nz, normalCorrection, startDepth, h);
@@ -79,7 +78,7 @@ final class ShapeContact {
         double vsx = s.vx + s.omegaY * rz - s.omegaZ * ry;
         double vsy = s.vy + s.omegaZ * rx - s.omegaX * rz;
         double vsz = s.vz + s.omegaX * ry - s.omegaY * rx;
-        s.rub(p, i, nx, ny, nz, normalCorrection, left, vsx, vsy, vsz, h);
+        CoulombFriction.apply(p, i, nx, ny, nz, normalCorrection, vsx, vsy, vsz, h, s.staticFriction, s.kineticFriction);
     }
 
     /** φ − m at a + t·m. */

@@ -70,8 +70,7 @@ public final class SphereContact {
         if (C >= 0) return s.isFast(h) ? sweptContact(p, i, s, h) : 0;
         // Out no faster than the depenetration speed from where it started inside (the sphere then at c − h v).
         double ax = p.prev[k] - (s.cx - h * s.vx), ay = p.prev[k + 1] - (s.cy - h * s.vy), az = p.prev[k + 2] - (s.cz - h * s.vz);
-        double left = s.leftInside(p, i, s.radius + s.margin - Math.sqrt(ax * ax + ay * ay + az * az), h);
-        C += left;
+        C += s.leftInside(p, i, s.radius + s.margin - Math.sqrt(ax * ax + ay * ay + az * az), h);
         if (C >= 0) return 0;
         double nx, ny, nz;
         if (len < DistanceBlock.MIN_LENGTH) { nx = 0; ny = 1; nz = 0; }
@@ -99,7 +98,7 @@ public final class SphereContact {
         double vsx = s.vx + s.omegaY * rz - s.omegaZ * ry;
         double vsy = s.vy + s.omegaZ * rx - s.omegaX * rz;
         double vsz = s.vz + s.omegaX * ry - s.omegaY * rx;
-        s.rub(p, i, nx, ny, nz, normalCorrection, left, vsx, vsy, vsz, h);
+        CoulombFriction.apply(p, i, nx, ny, nz, normalCorrection, vsx, vsy, vsz, h, s.staticFriction, s.kineticFriction);
         return dLambda;
     }
 
