@@ -51,6 +51,18 @@ class RobustnessCommandsTest {
         assertEquals("", failures.toString());
     }
 
+    /**
+     * Fresh seeds that a switch from Gauss–Seidel to Jacobi-PCG took over the energy bound: the switch solves
+     * the cloth further than the sweeps did, finds it stretched and lets the stretch go as speed (1002797:
+     * 1.9 MJ of strain after six steps, 94 J of kinetic energy, then 8 kJ in the first step under Jacobi-PCG;
+     * 1003447: 23 J of strain, then 12.7 J of kinetic energy where gravity gave 10.8 J). Within the bound now
+     * that a switch's strain is credited ({@link Plausibility#switchedSolver}); both failed before.
+     */
+    @Test
+    void speedFromTheStrainASolverSwitchLetsGoIsWithinTheBound() {
+        for (long seed : new long[] {1002797, 1003447}) assertNull(Fuzz.runCase(seed, SolverType.GAUSS_SEIDEL, true), "seed " + seed);
+    }
+
     /** Random presets with every field drawn across its documented range, edges included. */
     /**
      * The engine fuzzer adds wind and runs two threads (it used to do neither), and draws what the engine

@@ -95,9 +95,12 @@ public final class Fuzz implements Callable<Integer> {
                 }
                 if (r.nextInt(20) == 0) {
                     SolverType to = SolverType.values()[r.nextInt(3)];
+                    SolverType from = sim.settings().solver();
                     if (to != SolverType.GAUSS_SEIDEL) sim.settings(capForGlobal(sim.settings()));
                     String refused = switchSolver(sim, to);
                     if (refused != null) return "seed " + seed + ": " + refused;
+                    // The new solver may solve the cloth further and let go of the strain the old one left: credited.
+                    if (sim.settings().solver() != from) bound.switchedSolver();
                 }
                 // A pin or a hand holding cloth inside a solid: the two fight through the cloth with no bound on the
                 // work they do (Simulation.heldInsideColliders), so the bound judges a case up to that too.
