@@ -29,8 +29,8 @@ class RobustnessCommandsTest {
      * Seeded random cases for each solver (more with `gradle fuzz -Pcases=N`): 1000 under Gauss–Seidel,
      * 200 under Jacobi-PCG and 100 under multigrid-PCG (which cost more per case; before the fix 8 % of
      * such cases went non-finite, so either count would have caught it) and 100 under vertex block descent,
-     * each held to the energy bound too (Plausibility: no more kinetic energy than gravity, hands, colliders
-     * and the wind can have given); a failure names its seed.
+     * each held to the energy bound too (Plausibility: no more kinetic energy than gravity, hands, colliders,
+     * the wind and the strain a solver switch found can have given); a failure names its seed.
      */
     @Test
     void fuzzCasesForEverySolver() throws Exception {

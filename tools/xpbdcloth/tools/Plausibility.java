@@ -24,9 +24,11 @@ import xpbdcloth.engine.Simulation;
  * stiff cloth stretched far past what its load holds, and that stretch, ½ Σ C²/α, is the material's energy at
  * that shape, which the sweeps never paid for and never let go (they leave it alike every step). A solver that
  * converges further, switched to, solves the same cloth stiffer and lets the stretch go. As with the mode
- * switch (after which the fuzzer stops judging), a loaded spring is made stiffer, and the speed comes from the
- * strain the switch found, not from nowhere (fuzz seed 1002797: 1.9 MJ of strain and 94 J of kinetic energy
- * after six steps under Gauss–Seidel, 8.2 kJ of kinetic energy after the first step under Jacobi-PCG).
+ * switch, a loaded spring is made stiffer, and the speed comes from the strain the switch found, not from
+ * nowhere. A mode switch is not credited so but ends the judging ({@code Fuzz}): it changes the energy function
+ * itself (PBD's k has none), so there is no strain in common to credit, where a solver switch keeps ½ Σ C²/α.
+ * Fuzz seed 1002797: 1.9 MJ of strain and 94 J of kinetic energy after six steps under Gauss–Seidel, 8.2 kJ of
+ * kinetic energy after the first step under Jacobi-PCG.
  */
 final class Plausibility {
     private final Simulation sim;
