@@ -48,7 +48,7 @@ import java.util.Arrays;
  * Where it fails: a root at τ = 0 (a vertex exactly in a face's plane and inside it at the substep's start)
  * is taken as a touch, not a crossing; pinned particles pushed through the cloth by their script cannot be
  * stopped (counted in {@link #unresolved()}); a cloth that is already crossed stays so (it keeps a clean
- * cloth clean, it does not untangle). Cost: docs/contacts.md.
+ * cloth clean, it does not untangle: {@link CrossingUntangler} does). Cost: docs/contacts.md.
  */
 public final class CrossingGuard implements Team.Job {
     /** The share of the time to contact an event's particles keep of their move. */

@@ -33,7 +33,8 @@ import java.util.Arrays;
  * past {@link #MOST_PAIRS} a particle (a cloth moving far across itself in one substep, {@link #overloads()}).
  * Where it fails: a particle passing through the middle of a triangle between three others far apart
  * (the cloth's spacing larger than t) is not caught: this is particle–particle, not point–triangle; the
- * {@link CrossingGuard}, made with the triangles, catches what passes (at a cost, docs/contacts.md).
+ * {@link CrossingGuard}, made with the triangles, catches what passes (at a cost, docs/contacts.md), and a
+ * {@link CrossingUntangler} ({@link #untangling}) puts back what has passed at a step's end.
  */
 public final class SelfCollision extends Collider implements Team.Job {
     /** Pairs closer than this many thicknesses at rest are neighbours: the cloth's own constraints keep them apart. */
@@ -49,6 +50,8 @@ public final class SelfCollision extends Collider implements Team.Job {
     final double thickness;
     private final double[] rest;
     private final CrossingGuard guard;
+    private final int[] same;
+    private CrossingUntangler untangler;
     // The hash: particles sorted by cell; cellStart[h] .. cellStart[h + 1] - 1 index into sorted.
     private int[] cellStart = new int[0], sorted = new int[0], cellOf = new int[0];
     // The positions in the hash's order (candidates in a bucket are read one after another) and each
@@ -114,7 +117,20 @@ public final class SelfCollision extends Collider implements Team.Job {
         this.rest = restPositions.clone();
         this.thickness = Check.inRange("thickness", thickness, Double.MIN_NORMAL, EngineRange.MAX_RADIUS);
         this.guard = triangles == null ? null : new CrossingGuard(triangles, restPositions, same);
+        this.same = same == null ? null : same.clone();
     }
+
+    /**
+     * Adds a {@link CrossingUntangler} on the triangles: at each step's end, a cloth found passed through itself
+     * is put back to the sides its vertices held when last free of a crossing. Returns this.
+     */
+    public SelfCollision untangling(int[] triangles) {
+        this.untangler = new CrossingUntangler(triangles, rest, same, thickness);
+        return this;
+    }
+
+    /** The untangler, or null when a crossed cloth is left crossed. */
+    public CrossingUntangler untangler() { return untangler; }
 
     /** The continuous triangle guard, or null when only particle pairs keep the cloth from itself. */
     public CrossingGuard guard() { return guard; }

@@ -324,6 +324,11 @@ public final class Simulation {
             time = t;
         }
         attachments.arrive();
+        if (self != null && self.untangler() != null) {
+            long u0 = System.nanoTime();
+            self.untangler().untangle(particles);
+            collideNanos += System.nanoTime() - u0;
+        }
         java.util.Arrays.fill(particles.force, 0);
         stepCount++;
         profile.collideNanos = collideNanos;
