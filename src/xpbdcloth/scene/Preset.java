@@ -250,10 +250,17 @@ public final class Preset {
         public final double thickness, staticFriction, kineticFriction;
         /** Whether the triangles are kept from passing through each other in a substep (a CrossingGuard), not only the particles apart. */
         public final boolean continuous;
+        /** Whether a cloth found passed through itself at a step's end is put back (a CrossingUntangler). */
+        public final boolean untangle;
 
         public SelfCollisionSpec(double thickness, double staticFriction, double kineticFriction, boolean continuous) {
+            this(thickness, staticFriction, kineticFriction, continuous, false);
+        }
+
+        public SelfCollisionSpec(double thickness, double staticFriction, double kineticFriction, boolean continuous, boolean untangle) {
             this.thickness = thickness; this.staticFriction = staticFriction; this.kineticFriction = kineticFriction;
             this.continuous = continuous;
+            this.untangle = untangle;
         }
     }
 

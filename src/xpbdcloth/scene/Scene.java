@@ -207,7 +207,8 @@ public final class Scene {
         double[] rest = cloth.mesh().positions();
         int[] welded = garment == null ? null : garment.pattern.welded();
         if (welded != null) for (int i = 0; i < welded.length; i++) System.arraycopy(rest, 3 * welded[i], rest, 3 * i, 3);
-        return new SelfCollision(rest, triangles, welded, s.thickness, s.staticFriction, s.kineticFriction);
+        SelfCollision self = new SelfCollision(rest, triangles, welded, s.thickness, s.staticFriction, s.kineticFriction);
+        return s.untangle && cloth.triangles().length > 0 ? self.untangling(cloth.triangles()) : self;
     }
 
     /** Puts each particle at its flat pattern position (x, y, 0); returns where they were. */

@@ -458,10 +458,10 @@ public final class SketchState {
     /** What z has chosen: off, particle pairs, or pairs and the continuous guard. */
     public String selfCollisionState() { return !selfCollisionOn ? "off" : continuousOn ? "continuous" : "particle pairs"; }
 
-    /** The preset's self-collision, or half the cloth's shortest edge with layers' friction 0.3 / 0.2; the guard as the keys set it. */
+    /** The preset's self-collision (its untangling too), or half the cloth's shortest edge with layers' friction 0.3 / 0.2; the guard as the keys set it. */
     Preset.SelfCollisionSpec selfCollisionSpec() {
         Preset.SelfCollisionSpec p = preset.selfCollision;
-        return p != null ? new Preset.SelfCollisionSpec(p.thickness, p.staticFriction, p.kineticFriction, continuousOn)
+        return p != null ? new Preset.SelfCollisionSpec(p.thickness, p.staticFriction, p.kineticFriction, continuousOn, p.untangle)
                 : new Preset.SelfCollisionSpec(0.5 * preset.cloth.shortestEdge(), 0.3, 0.2, continuousOn);
     }
 

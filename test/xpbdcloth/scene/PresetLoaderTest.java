@@ -279,6 +279,12 @@ class PresetLoaderTest {
         String every5 = text.replace("\"kineticFriction\": 0.2 }", "\"kineticFriction\": 0.2, \"rebuildEvery\": 5 }");
         e = assertThrows(PresetException.class, () -> PresetLoader.parse("self.json", every5));
         assertEquals("selfCollision.rebuildEvery", e.field(), e.getMessage());
+        // Untangling is off unless asked for; asked for, the self-collision has an untangler; not a boolean, named.
+        assertNull(scene.simulation().selfCollision().untangler());
+        String untangled = text.replace("\"kineticFriction\": 0.2 }", "\"kineticFriction\": 0.2, \"untangle\": true }");
+        assertNotNull(Scene.of(PresetLoader.parse("self.json", untangled)).simulation().selfCollision().untangler());
+        e = assertThrows(PresetException.class, () -> PresetLoader.parse("self.json", untangled.replace("\"untangle\": true", "\"untangle\": 1")));
+        assertEquals("selfCollision.untangle", e.field(), e.getMessage());
     }
 
     static final String TURNING_BODY = "{ \"type\": \"mesh\", \"file\": \"mannequin-turn.usda\", \"start\": 2.5, \"loop\": true, \"margin\": 0.005,"
