@@ -18,7 +18,8 @@ import xpbdcloth.scene.Scene;
  * over the run: the whole step, the contact stage (finding the contacts and projecting them) and the
  * solve; bytes allocated per step over the last 100 steps (arrays have grown by then); and the most
  * vertex-disjoint triangle pairs crossing each other in any step. Last, drop-fold and denim-fold at 64² with
- * self-collision's continuous triangle guard ({@code self} = continuous).
+ * self-collision's continuous triangle guard ({@code self} = continuous), then with particle pairs and the
+ * untangler ({@code self} = untangle).
  *
  * <p>The cloth keeps the scene's size (1 m), so its spacing shrinks with N: the thickness is the scene's
  * or 0.9 of the spacing, whichever is less, and the floor's margin 5 mm or 0.45 of the spacing (both must
@@ -44,13 +45,21 @@ final class ContactBench {
         // The continuous triangle guard on the same scenes (opt-in: several times the step).
         System.out.println(measure("drop-fold", 64, true, 1, true));
         for (int threads : new int[] {1, 2}) System.out.println(measure("denim-fold", 64, true, threads, true));
+        // Particle pairs with the untangler (opt-in): what is crossed at a step's end is put back.
+        System.out.println(measure("drop-fold", 64, true, 1, false, true));
+        System.out.println(measure("denim-fold", 64, true, 1, false, true));
     }
 
-    static String measure(String name, int n, boolean self, int threads) { return measure(name, n, self, threads, false); }
+    static String measure(String name, int n, boolean self, int threads) { return measure(name, n, self, threads, false, false); }
 
-    /** One row; {@code continuous} adds the continuous triangle guard to self-collision (the self column says "continuous"). */
-    static String measure(String name, int n, boolean self, int threads, boolean continuous) {
-        Scene scene = scene(name, n, self, continuous);
+    static String measure(String name, int n, boolean self, int threads, boolean continuous) { return measure(name, n, self, threads, continuous, false); }
+
+    /**
+     * One row; {@code continuous} adds the continuous triangle guard to self-collision (the self column says
+     * "continuous"), {@code untangle} the untangler ("untangle").
+     */
+    static String measure(String name, int n, boolean self, int threads, boolean continuous, boolean untangle) {
+        Scene scene = scene(name, n, self, continuous, untangle);
         Simulation sim = scene.simulation();
         sim.settings(sim.settings().withThreads(threads));
         int[] triangles = scene.cloth().triangles();
@@ -68,12 +77,12 @@ final class ContactBench {
             worst = Math.max(worst, TriangleIntersections.count(sim.particles().positions(), triangles));
         }
         sim.close();
-        return String.format(Locale.ROOT, "%s,%d,%d,%s,%.2f,%.2f,%.2f,%d,%d", name, n, threads, !self ? "off" : continuous ? "continuous" : "on",
+        return String.format(Locale.ROOT, "%s,%d,%d,%s,%.2f,%.2f,%.2f,%d,%d", name, n, threads, !self ? "off" : continuous ? "continuous" : untangle ? "untangle" : "on",
                 total / STEPS, contact / STEPS, solve / STEPS, alloc / STEADY, worst);
     }
 
-    /** The built-in preset at N × N, its thickness and margin fitted to the spacing; the triangle guard if continuous. */
-    static Scene scene(String name, int n, boolean self, boolean continuous) {
+    /** The built-in preset at N × N, its thickness and margin fitted to the spacing; the triangle guard if continuous, the untangler if untangle. */
+    static Scene scene(String name, int n, boolean self, boolean continuous, boolean untangle) {
         try {
             ObjectMapper json = new ObjectMapper();
             ObjectNode root = (ObjectNode) json.readTree(PresetLoader.text(name));
@@ -83,7 +92,7 @@ final class ContactBench {
             ObjectNode floor = (ObjectNode) root.get("colliders").get(0);
             floor.put("margin", Math.min(floor.get("margin").asDouble(), 0.45 * spacing));
             ObjectNode sc = (ObjectNode) root.get("selfCollision");
-            if (self) sc.put("thickness", Math.min(sc.get("thickness").asDouble(), 0.9 * spacing)).put("continuous", continuous);
+            if (self) sc.put("thickness", Math.min(sc.get("thickness").asDouble(), 0.9 * spacing)).put("continuous", continuous).put("untangle", untangle);
             else root.remove("selfCollision");
             return Scene.of(PresetLoader.parse(name + " at " + n + "²", json.writeValueAsString(root)));
         } catch (IOException e) {

@@ -380,8 +380,11 @@ public final class Fuzz implements Callable<Integer> {
                 // The continuous triangle guard in one such case of two, drawn from a stream of its own so that
                 // the case's other draws stay what they were.
                 boolean continuous = cloth.triangles().length > 0 && new Random(Double.doubleToLongBits(thickness)).nextBoolean();
-                sim.selfCollision(new xpbdcloth.engine.SelfCollision(cloth.mesh().positions(), continuous ? cloth.triangles() : null,
-                        thickness, staticFriction, kineticFriction));
+                // The untangler likewise, from another stream of its own, in one case of two with triangles.
+                boolean untangle = cloth.triangles().length > 0 && new Random(~Double.doubleToLongBits(thickness)).nextBoolean();
+                xpbdcloth.engine.SelfCollision self = new xpbdcloth.engine.SelfCollision(cloth.mesh().positions(), continuous ? cloth.triangles() : null,
+                        thickness, staticFriction, kineticFriction);
+                sim.selfCollision(untangle ? self.untangling(cloth.triangles()) : self);
             }
         }
         if (r.nextInt(4) == 0) {

@@ -64,15 +64,18 @@ final class PresetFuzz {
         return meshFacts = out;
     }
 
+    /** The stream of a seed's latest fields (the untangling), apart from its others. */
+    static Random latest(long seed) { return new Random(Long.rotateLeft(seed, 17) ^ 0x2545F4914F6CDD1DL); }
+
     /** The preset a seed draws (its text only, nothing run). */
     static String text(long seed) {
-        return new Case(new Random(seed), new Random(~seed)).json();
+        return new Case(new Random(seed), new Random(~seed), latest(seed)).json();
     }
 
     /** One case: null if it passed, else why not. */
     static String runCase(long seed) {
         Random r = new Random(seed);
-        Case c = new Case(r, new Random(~seed));
+        Case c = new Case(r, new Random(~seed), latest(seed));
         String text = c.json();
         if (c.brokenField != null) {
             try {
@@ -107,7 +110,10 @@ final class PresetFuzz {
         /** Draws of fields added later, apart, so that a seed's other draws stay what they were. */
         final Random later;
 
-        Case(Random r, Random later) { this.r = r; this.later = later; }
+        /** Draws of fields added after {@code later}'s, from a stream of their own for the same reason. */
+        final Random latest;
+
+        Case(Random r, Random later, Random latest) { this.r = r; this.later = later; this.latest = latest; }
 
         /** A collider's depenetration speed, in one collider of two (else the engine's default). */
         String depenetration() {
@@ -117,10 +123,14 @@ final class PresetFuzz {
             return ", \"depenetrationSpeed\": " + num(v);
         }
 
-        /** Self-collision's continuous triangle guard, said in one case of two (on in one of those two). */
+        /**
+         * Self-collision's continuous triangle guard, said in one case of two (on in one of those two); and its
+         * untangling, said likewise from a stream of its own.
+         */
         String continuous() {
-            if (later.nextBoolean()) return "";
-            return ", \"continuous\": " + later.nextBoolean();
+            String untangle = latest.nextBoolean() ? "" : ", \"untangle\": " + latest.nextBoolean();
+            if (later.nextBoolean()) return untangle;
+            return ", \"continuous\": " + later.nextBoolean() + untangle;
         }
 
         /** Uniform in the range, or one of its edges one time in four; log-uniform for positive ranges. */
