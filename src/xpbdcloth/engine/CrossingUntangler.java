@@ -42,6 +42,12 @@ import java.util.Arrays;
 public final class CrossingUntangler {
     /** Passes (find the piercings, put them back) a step at most. */
     static final int MOST_PASSES = 8;
+    /**
+     * The most candidate faces a search reads per edge, on average: a cloth whose edges' boxes span most of it
+     * (flung apart, or crossing nearly all of itself) would cost edges × faces tests a pass; past this the
+     * step is left as it is ({@link #overloads()}).
+     */
+    static final int MOST_CANDIDATES = 512;
     /** Barycentric and segment-parameter slack: a piercing through a shared edge is not missed by round-off. */
     private static final double SLACK = 1e-9;
 
@@ -63,7 +69,7 @@ public final class CrossingUntangler {
     private int[] pierceEdge = new int[16], pierceFace = new int[16];
     private double[] pierceAt = new double[32];
     private int pierces;
-    private long pushed, left, tangledSteps;
+    private long pushed, left, tangledSteps, overloads;
 
     /**
      * @param triangles the cloth's triangles, 3 particle indices each
@@ -111,6 +117,9 @@ public final class CrossingUntangler {
     /** Steps that ended with the cloth pierced before the passes (each untangled, or tried). */
     public long tangledSteps() { return tangledSteps; }
 
+    /** Steps left as they were because a search would have read more than {@link #MOST_CANDIDATES} faces per edge. */
+    public long overloads() { return overloads; }
+
     /** Forgets the history (a scene reset, or positions set by hand): the next step's positions are the history. */
     public void forget() { hasClean = false; }
 
@@ -121,6 +130,7 @@ public final class CrossingUntangler {
     int untangle(Particles p) {
         final double[] x = p.x, w = p.w;
         int found = find(x);
+        if (found < 0) { overloads++; return 0; }
         if (found > 0) {
             tangledSteps++;
             System.arraycopy(x, 0, fewest, 0, fewest.length);
@@ -128,6 +138,7 @@ public final class CrossingUntangler {
             for (int pass = 0; pass < MOST_PASSES && found > 0; pass++) {
                 putBack(x, w);
                 found = find(x);
+                if (found < 0) { found = Integer.MAX_VALUE; break; } // overloaded by this pass's moves: the fewest is kept below
                 if (found < least) {
                     least = found;
                     System.arraycopy(x, 0, fewest, 0, fewest.length);
@@ -163,7 +174,10 @@ public final class CrossingUntangler {
         hasClean = true;
     }
 
-    /** Finds every edge that pierces a face, but for neighbours ({@link #shares}); returns how many. */
+    /**
+     * Finds every edge that pierces a face, but for neighbours ({@link #shares}); returns how many, or −1 past
+     * {@link #MOST_CANDIDATES} faces read per edge.
+     */
     private int find(double[] x) {
         final int faces = triangles.length / 3;
         for (int f = 0; f < faces; f++) {
@@ -175,10 +189,12 @@ public final class CrossingUntangler {
         }
         grid.build(faceBoxes, faces);
         pierces = 0;
+        long budget = (long) MOST_CANDIDATES * (edges.length / 2);
         for (int e = 0; e < edges.length; e += 2) {
             final int a = edges[e], b = edges[e + 1];
             final int n = grid.query(query, Math.min(x[3 * a], x[3 * b]), Math.min(x[3 * a + 1], x[3 * b + 1]), Math.min(x[3 * a + 2], x[3 * b + 2]),
                     Math.max(x[3 * a], x[3 * b]), Math.max(x[3 * a + 1], x[3 * b + 1]), Math.max(x[3 * a + 2], x[3 * b + 2]));
+            if ((budget -= n) < 0) { pierces = 0; return -1; }
             final int[] hits = query.found();
             for (int k = 0; k < n; k++) {
                 final int f = hits[k];
