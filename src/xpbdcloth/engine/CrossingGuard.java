@@ -640,8 +640,8 @@ public final class CrossingGuard implements Team.Job {
         }
     }
 
-    /** The mean length of the edges at rest (1 for a mesh without any). */
-    private static double meanEdge(int[] edges, double[] rest) {
+    /** The mean length of edges (vertex pairs) over positions rest; 1 for none or all of length 0. */
+    static double meanEdge(int[] edges, double[] rest) {
         double sum = 0;
         for (int e = 0; e < edges.length; e += 2)
             sum += Math.sqrt(squared(rest[3 * edges[e]] - rest[3 * edges[e + 1]], rest[3 * edges[e] + 1] - rest[3 * edges[e + 1] + 1], rest[3 * edges[e] + 2] - rest[3 * edges[e + 1] + 2]));

@@ -1,13 +1,14 @@
 package xpbdcloth.engine;
 
 import java.util.Arrays;
+import xpbdcloth.mesh.TriangleIntersections;
 
 /**
  * The safety net under self-collision: a cloth that has passed through itself anyway (between particles kept
  * apart only as particles, or a crossing the guard let through) is pushed back, each crossed vertex to the
  * side of the face it held when it was last free of a crossing. At the end of a step every edge that pierces
  * a face is found (where the face shares no vertex with at least one of the edge's triangles: exactly the
- * triangle pairs the measure, {@code TriangleIntersections}, counts); the end of the edge that changed sides
+ * triangle pairs the measure, {@code TriangleIntersections}, counts, with its segment–triangle test); the end of the edge that changed sides
  * of the face since then is the one that went through, and one contact per piercing puts it back:
  * <pre>
  *   C(x) = σ (x_p − Σᵢ βᵢ x_fᵢ) · n − g ≥ 0
@@ -48,8 +49,6 @@ public final class CrossingUntangler {
      * step is left as it is ({@link #overloads()}).
      */
     static final int MOST_CANDIDATES = 512;
-    /** Barycentric and segment-parameter slack: a piercing through a shared edge is not missed by round-off. */
-    private static final double SLACK = 1e-9;
 
     private final int particles;
     private final int[] triangles, edges, same;
@@ -68,6 +67,8 @@ public final class CrossingUntangler {
     /** The piercings of the current pass: the edge, the face, and where on the face (β₁, β₂). */
     private int[] pierceEdge = new int[16], pierceFace = new int[16];
     private double[] pierceAt = new double[32];
+    /** Where the last test found a piercing on its face (β₁, β₂). */
+    private final double[] hit = new double[2];
     private int pierces;
     private long pushed, left, tangledSteps, overloads;
 
@@ -97,9 +98,7 @@ public final class CrossingUntangler {
             opposite[2 * e] = oppositeCorner(numbered.firstSide(e));
             opposite[2 * e + 1] = oppositeCorner(numbered.secondSide(e));
         }
-        double sum = 0;
-        for (int e = 0; e < edges.length; e += 2) sum += Math.sqrt(distanceSquared(rest, edges[e], edges[e + 1]));
-        final double mean = edges.length == 0 || !(sum > 0) ? 1 : sum / (edges.length / 2);
+        final double mean = CrossingGuard.meanEdge(edges, rest);
         grid = new TriangleGrid(mean);
         meanEdge = mean;
         faceBoxes = new double[2 * this.triangles.length];
@@ -169,8 +168,9 @@ public final class CrossingUntangler {
             held[edges[2 * pierceEdge[k] + 1]] = stamp;
             for (int c = 0; c < 3; c++) held[triangles[3 * pierceFace[k] + c]] = stamp;
         }
-        for (int i = 0; i < particles; i++)
-            if (!hasClean || held[i] != stamp) { clean[3 * i] = x[3 * i]; clean[3 * i + 1] = x[3 * i + 1]; clean[3 * i + 2] = x[3 * i + 2]; }
+        if (pierces == 0 || !hasClean) System.arraycopy(x, 0, clean, 0, clean.length);
+        else for (int i = 0; i < particles; i++)
+            if (held[i] != stamp) { clean[3 * i] = x[3 * i]; clean[3 * i + 1] = x[3 * i + 1]; clean[3 * i + 2] = x[3 * i + 2]; }
         hasClean = true;
     }
 
@@ -205,25 +205,9 @@ public final class CrossingUntangler {
         return pierces;
     }
 
-    /** Möller–Trumbore (1997) on the segment a→b and face f; records the piercing with where on the face. */
+    /** Records edge a→b piercing face f, with where on the face, if it does (the measure's own test). */
     private void pierce(double[] x, int edge, int a, int b, int f) {
-        final int c0 = 3 * triangles[3 * f], c1 = 3 * triangles[3 * f + 1], c2 = 3 * triangles[3 * f + 2];
-        final double dx = x[3 * b] - x[3 * a], dy = x[3 * b + 1] - x[3 * a + 1], dz = x[3 * b + 2] - x[3 * a + 2];
-        final double e1x = x[c1] - x[c0], e1y = x[c1 + 1] - x[c0 + 1], e1z = x[c1 + 2] - x[c0 + 2];
-        final double e2x = x[c2] - x[c0], e2y = x[c2 + 1] - x[c0 + 1], e2z = x[c2 + 2] - x[c0 + 2];
-        final double px = dy * e2z - dz * e2y, py = dz * e2x - dx * e2z, pz = dx * e2y - dy * e2x;
-        final double det = e1x * px + e1y * py + e1z * pz;
-        final double scale = Math.sqrt((dx * dx + dy * dy + dz * dz) * (e1x * e1x + e1y * e1y + e1z * e1z) * (e2x * e2x + e2y * e2y + e2z * e2z));
-        if (!(Math.abs(det) > 1e-12 * scale)) return; // in the face's plane (or degenerate): no side to put back to
-        final double inv = 1 / det;
-        final double sx = x[3 * a] - x[c0], sy = x[3 * a + 1] - x[c0 + 1], sz = x[3 * a + 2] - x[c0 + 2];
-        final double u = (sx * px + sy * py + sz * pz) * inv;
-        if (u < -SLACK || u > 1 + SLACK) return;
-        final double qx = sy * e1z - sz * e1y, qy = sz * e1x - sx * e1z, qz = sx * e1y - sy * e1x;
-        final double v = (dx * qx + dy * qy + dz * qz) * inv;
-        if (v < -SLACK || u + v > 1 + SLACK) return;
-        final double s = (e2x * qx + e2y * qy + e2z * qz) * inv;
-        if (s < 0 || s > 1) return;
+        if (!TriangleIntersections.segmentHit(x, a, b, triangles[3 * f], triangles[3 * f + 1], triangles[3 * f + 2], hit)) return;
         if (pierces == pierceEdge.length) {
             pierceEdge = Arrays.copyOf(pierceEdge, 2 * pierces);
             pierceFace = Arrays.copyOf(pierceFace, 2 * pierces);
@@ -231,8 +215,8 @@ public final class CrossingUntangler {
         }
         pierceEdge[pierces] = edge;
         pierceFace[pierces] = f;
-        pierceAt[2 * pierces] = Math.min(1, Math.max(0, u));
-        pierceAt[2 * pierces + 1] = Math.min(1, Math.max(0, v));
+        pierceAt[2 * pierces] = hit[0];
+        pierceAt[2 * pierces + 1] = hit[1];
         pierces++;
     }
 
@@ -329,10 +313,5 @@ public final class CrossingUntangler {
     private static boolean finite(double[] x) {
         for (double v : x) if (!Double.isFinite(v)) return false;
         return true;
-    }
-
-    private static double distanceSquared(double[] x, int a, int b) {
-        final double dx = x[3 * a] - x[3 * b], dy = x[3 * a + 1] - x[3 * b + 1], dz = x[3 * a + 2] - x[3 * b + 2];
-        return dx * dx + dy * dy + dz * dz;
     }
 }

@@ -102,14 +102,24 @@ public final class TriangleIntersections {
 
     /** Möller–Trumbore: does segment p→q cross triangle k (its interior or boundary)? */
     private static boolean segmentCrosses(double[] x, int p, int q, int[] t, int k) {
-        int a = 3 * t[3 * k], b = 3 * t[3 * k + 1], c = 3 * t[3 * k + 2];
+        return segmentHit(x, p, q, t[3 * k], t[3 * k + 1], t[3 * k + 2], null);
+    }
+
+    /**
+     * Möller–Trumbore: whether the segment from particle p to q crosses the triangle (a, b, c), its interior or
+     * boundary, over positions x (xyz interleaved); where it does, the crossing's barycentric coordinates on
+     * the triangle (of b and of c) go into at[0], at[1] if at is given. A segment parallel to the triangle's
+     * plane (within round-off) does not cross it: coplanar overlaps are not counted. Allocates nothing.
+     */
+    public static boolean segmentHit(double[] x, int p, int q, int a, int b, int c, double[] at) {
+        a *= 3; b *= 3; c *= 3;
         double dx = x[3 * q] - x[3 * p], dy = x[3 * q + 1] - x[3 * p + 1], dz = x[3 * q + 2] - x[3 * p + 2];
         double e1x = x[b] - x[a], e1y = x[b + 1] - x[a + 1], e1z = x[b + 2] - x[a + 2];
         double e2x = x[c] - x[a], e2y = x[c + 1] - x[a + 1], e2z = x[c + 2] - x[a + 2];
         double px = dy * e2z - dz * e2y, py = dz * e2x - dx * e2z, pz = dx * e2y - dy * e2x;
         double det = e1x * px + e1y * py + e1z * pz;
         double scale = Math.sqrt(dx * dx + dy * dy + dz * dz) * Math.sqrt(e1x * e1x + e1y * e1y + e1z * e1z) * Math.sqrt(e2x * e2x + e2y * e2y + e2z * e2z);
-        if (Math.abs(det) <= 1e-12 * scale) return false; // parallel to the plane: coplanar cases not counted
+        if (!(Math.abs(det) > 1e-12 * scale)) return false; // parallel to the plane (or not finite): coplanar cases not counted
         double inv = 1 / det;
         double sx = x[3 * p] - x[a], sy = x[3 * p + 1] - x[a + 1], sz = x[3 * p + 2] - x[a + 2];
         double u = (sx * px + sy * py + sz * pz) * inv;
@@ -118,7 +128,9 @@ public final class TriangleIntersections {
         double v = (dx * qx + dy * qy + dz * qz) * inv;
         if (v < 0 || u + v > 1) return false;
         double s = (e2x * qx + e2y * qy + e2z * qz) * inv;
-        return s >= 0 && s <= 1;
+        if (!(s >= 0 && s <= 1)) return false;
+        if (at != null) { at[0] = u; at[1] = v; }
+        return true;
     }
 
     private static int hash(int x, int y, int z, int table) {
