@@ -253,10 +253,6 @@ public final class Preset {
         /** Whether a cloth found passed through itself at a step's end is put back (a CrossingUntangler). */
         public final boolean untangle;
 
-        public SelfCollisionSpec(double thickness, double staticFriction, double kineticFriction, boolean continuous) {
-            this(thickness, staticFriction, kineticFriction, continuous, false);
-        }
-
         public SelfCollisionSpec(double thickness, double staticFriction, double kineticFriction, boolean continuous, boolean untangle) {
             this.thickness = thickness; this.staticFriction = staticFriction; this.kineticFriction = kineticFriction;
             this.continuous = continuous;

@@ -462,7 +462,7 @@ public final class SketchState {
     Preset.SelfCollisionSpec selfCollisionSpec() {
         Preset.SelfCollisionSpec p = preset.selfCollision;
         return p != null ? new Preset.SelfCollisionSpec(p.thickness, p.staticFriction, p.kineticFriction, continuousOn, p.untangle)
-                : new Preset.SelfCollisionSpec(0.5 * preset.cloth.shortestEdge(), 0.3, 0.2, continuousOn);
+                : new Preset.SelfCollisionSpec(0.5 * preset.cloth.shortestEdge(), 0.3, 0.2, continuousOn, false);
     }
 
     public boolean paused() { return paused; }
