@@ -90,6 +90,18 @@ class CrossingGuardTest {
 
     static final int N = 24;
 
+    /** Bytes the caller's thread allocates per step of sim, the smaller over two windows of 20 steps (as AllocationTest counts). */
+    static double leastBytesPerStep(Simulation sim) {
+        com.sun.management.ThreadMXBean bean = (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
+        double perStep = Double.MAX_VALUE;
+        for (int window = 0; window < 2; window++) {
+            long before = bean.getCurrentThreadAllocatedBytes();
+            for (int step = 0; step < 20; step++) sim.step();
+            perStep = Math.min(perStep, (bean.getCurrentThreadAllocatedBytes() - before) / 20.0);
+        }
+        return perStep;
+    }
+
     /**
      * A cloth whose every particle is thrown 100 m in its own direction within one substep: every feature may
      * meet every other, and listing them all would take memory without bound. The guard lists at most
@@ -157,16 +169,10 @@ class CrossingGuardTest {
      */
     @Test
     void aGuardedClothStepsWithoutAllocating() {
-        com.sun.management.ThreadMXBean bean = (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
         for (int threads = 1; threads <= 2; threads++) {
             Simulation sim = collapse(collapsingCloth(), threads, true);
             for (int step = 0; step < 40; step++) sim.step();
-            double perStep = Double.MAX_VALUE;
-            for (int window = 0; window < 2; window++) {
-                long before = bean.getCurrentThreadAllocatedBytes();
-                for (int step = 0; step < 20; step++) sim.step();
-                perStep = Math.min(perStep, (bean.getCurrentThreadAllocatedBytes() - before) / 20.0);
-            }
+            double perStep = leastBytesPerStep(sim);
             sim.close();
             assertTrue(sim.selfCollision().guard().events() > 0, "the guard had events to cut");
             assertTrue(perStep < 16, threads + " thread(s): " + perStep + " bytes a step");

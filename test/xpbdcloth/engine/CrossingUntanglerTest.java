@@ -142,18 +142,12 @@ class CrossingUntanglerTest {
      */
     @Test
     void untanglingStepsAllocateNothing() {
-        com.sun.management.ThreadMXBean bean = (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
         Cloth c = CrossingGuardTest.collapsingCloth();
         Simulation sim = CrossingGuardTest.collapse(c, 1, false);
         sim.selfCollision().untangling(c.triangles());
         for (int step = 0; step < 40; step++) sim.step();
         assertTrue(sim.selfCollision().untangler().tangledSteps() > 0, "the warm-up steps had crossings to put back");
-        double perStep = Double.MAX_VALUE;
-        for (int window = 0; window < 2; window++) {
-            long before = bean.getCurrentThreadAllocatedBytes();
-            for (int step = 0; step < 20; step++) sim.step();
-            perStep = Math.min(perStep, (bean.getCurrentThreadAllocatedBytes() - before) / 20.0);
-        }
+        double perStep = CrossingGuardTest.leastBytesPerStep(sim);
         assertEquals(0, perStep, 0, "bytes allocated per step");
     }
 

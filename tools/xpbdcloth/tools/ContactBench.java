@@ -29,37 +29,37 @@ import xpbdcloth.scene.Scene;
 final class ContactBench {
     private ContactBench() {}
 
+    /** Self-collision in a row: none, particle pairs, pairs and the continuous guard, pairs and the untangler (the self column). */
+    enum Self {
+        OFF("off"), PAIRS("on"), CONTINUOUS("continuous"), UNTANGLE("untangle");
+        final String column;
+        Self(String column) { this.column = column; }
+    }
+
     static final String HEADER = "case,n,threads,self,ms_per_step,contact_ms,solve_ms,alloc_bytes_per_step,max_crossing_pairs";
     static final int STEPS = 400, STEADY = 100;
 
     static void run() {
         System.out.println(HEADER);
         // One run first so the timed ones are compiled code.
-        measure("denim-fold", 32, true, 1);
+        measure("denim-fold", 32, Self.PAIRS, 1);
         for (int n : new int[] {32, 64, 128}) {
-            System.out.println(measure("drop-fold", n, false, 1));
-            System.out.println(measure("drop-fold", n, true, 1));
+            System.out.println(measure("drop-fold", n, Self.OFF, 1));
+            System.out.println(measure("drop-fold", n, Self.PAIRS, 1));
         }
         for (int n : new int[] {64, 128})
-            for (int threads : new int[] {1, 2}) System.out.println(measure("denim-fold", n, true, threads));
+            for (int threads : new int[] {1, 2}) System.out.println(measure("denim-fold", n, Self.PAIRS, threads));
         // The continuous triangle guard on the same scenes (opt-in: several times the step).
-        System.out.println(measure("drop-fold", 64, true, 1, true));
-        for (int threads : new int[] {1, 2}) System.out.println(measure("denim-fold", 64, true, threads, true));
+        System.out.println(measure("drop-fold", 64, Self.CONTINUOUS, 1));
+        for (int threads : new int[] {1, 2}) System.out.println(measure("denim-fold", 64, Self.CONTINUOUS, threads));
         // Particle pairs with the untangler (opt-in): what is crossed at a step's end is put back.
-        System.out.println(measure("drop-fold", 64, true, 1, false, true));
-        System.out.println(measure("denim-fold", 64, true, 1, false, true));
+        System.out.println(measure("drop-fold", 64, Self.UNTANGLE, 1));
+        System.out.println(measure("denim-fold", 64, Self.UNTANGLE, 1));
     }
 
-    static String measure(String name, int n, boolean self, int threads) { return measure(name, n, self, threads, false, false); }
-
-    static String measure(String name, int n, boolean self, int threads, boolean continuous) { return measure(name, n, self, threads, continuous, false); }
-
-    /**
-     * One row; {@code continuous} adds the continuous triangle guard to self-collision (the self column says
-     * "continuous"), {@code untangle} the untangler ("untangle").
-     */
-    static String measure(String name, int n, boolean self, int threads, boolean continuous, boolean untangle) {
-        Scene scene = scene(name, n, self, continuous, untangle);
+    /** One row: the scene at N × N with the given self-collision, on the given threads. */
+    static String measure(String name, int n, Self self, int threads) {
+        Scene scene = scene(name, n, self);
         Simulation sim = scene.simulation();
         sim.settings(sim.settings().withThreads(threads));
         int[] triangles = scene.cloth().triangles();
@@ -77,12 +77,12 @@ final class ContactBench {
             worst = Math.max(worst, TriangleIntersections.count(sim.particles().positions(), triangles));
         }
         sim.close();
-        return String.format(Locale.ROOT, "%s,%d,%d,%s,%.2f,%.2f,%.2f,%d,%d", name, n, threads, !self ? "off" : continuous ? "continuous" : untangle ? "untangle" : "on",
+        return String.format(Locale.ROOT, "%s,%d,%d,%s,%.2f,%.2f,%.2f,%d,%d", name, n, threads, self.column,
                 total / STEPS, contact / STEPS, solve / STEPS, alloc / STEADY, worst);
     }
 
-    /** The built-in preset at N × N, its thickness and margin fitted to the spacing; the triangle guard if continuous, the untangler if untangle. */
-    static Scene scene(String name, int n, boolean self, boolean continuous, boolean untangle) {
+    /** The built-in preset at N × N, its thickness and margin fitted to the spacing, with the given self-collision. */
+    static Scene scene(String name, int n, Self self) {
         try {
             ObjectMapper json = new ObjectMapper();
             ObjectNode root = (ObjectNode) json.readTree(PresetLoader.text(name));
@@ -92,7 +92,8 @@ final class ContactBench {
             ObjectNode floor = (ObjectNode) root.get("colliders").get(0);
             floor.put("margin", Math.min(floor.get("margin").asDouble(), 0.45 * spacing));
             ObjectNode sc = (ObjectNode) root.get("selfCollision");
-            if (self) sc.put("thickness", Math.min(sc.get("thickness").asDouble(), 0.9 * spacing)).put("continuous", continuous).put("untangle", untangle);
+            if (self != Self.OFF) sc.put("thickness", Math.min(sc.get("thickness").asDouble(), 0.9 * spacing))
+                    .put("continuous", self == Self.CONTINUOUS).put("untangle", self == Self.UNTANGLE);
             else root.remove("selfCollision");
             return Scene.of(PresetLoader.parse(name + " at " + n + "²", json.writeValueAsString(root)));
         } catch (IOException e) {
