@@ -112,6 +112,18 @@ public abstract class Collider {
     /** The second particle of contact i, or −1 when the other side is a solid. */
     int partner(int i) { return -1; }
 
+    /** Marks the particles of contact i other than the one the contact set lists it by (its partner, if any). */
+    void markOthers(int i, boolean[] held) {
+        int other = partner(i);
+        if (other >= 0) held[other] = true;
+    }
+
+    /**
+     * Whether this is the cloth against itself (its particle pairs, its vertices against its faces): internal
+     * forces, which do no work on the cloth as a whole and leave no particle inside a solid.
+     */
+    boolean internal() { return false; }
+
     /**
      * Whether this collider moved or turned over the last substep: its contacts can then do work on the
      * cloth, which a still one cannot (it only takes energy out, by friction and inelastic pushes).

@@ -68,7 +68,7 @@ final class ContactSet {
         this.self = self;
         for (int s = 0, ns = spheres.size(); s < ns; s++) spheres.get(s).findContacts(p, h, this);
         for (int s = 0, ns = solids.size(); s < ns; s++) solids.get(s).findContacts(p, h, this);
-        if (self != null) self.findContacts(p, this, team);
+        if (self != null) self.findContacts(p, h, this, team);
         // The fixed planes last, so they have the last word in every sweep (see project).
         for (int s = 0, ns = planes.size(); s < ns; s++) planes.get(s).findContacts(p, h, this);
     }
@@ -105,8 +105,7 @@ final class ContactSet {
         for (int k = 0; k < count; k++) {
             if (with[k].clearance(p, entry[k]) >= TOUCHING) continue;
             held[particle[k]] = true;
-            int other = with[k].partner(entry[k]);
-            if (other >= 0) held[other] = true;
+            with[k].markOthers(entry[k], held);
         }
     }
 
@@ -138,7 +137,7 @@ final class ContactSet {
 
     /** Forgets what the projections moved the particles by in this substep (a solve that is redone). */
     void forgetMoves() {
-        for (int k = 0; k < count; k++) if (with[k] != this.self) { int k3 = 3 * particle[k]; moved[k3] = 0; moved[k3 + 1] = 0; moved[k3 + 2] = 0; }
+        for (int k = 0; k < count; k++) if (!with[k].internal()) { int k3 = 3 * particle[k]; moved[k3] = 0; moved[k3 + 1] = 0; moved[k3 + 2] = 0; }
     }
 
     /**
@@ -171,7 +170,7 @@ final class ContactSet {
         int n = 0;
         for (int k = 0; k < count; k++) {
             int i = particle[k];
-            if (countedIn[i] != insideCalls && !(with[k] instanceof SelfCollision) && with[k].clearance(p, entry[k]) < -1.1 * with[k].margin) {
+            if (countedIn[i] != insideCalls && !with[k].internal() && with[k].clearance(p, entry[k]) < -1.1 * with[k].margin) {
                 countedIn[i] = insideCalls;
                 n++;
             }
@@ -214,9 +213,20 @@ final class ContactSet {
         return list;
     }
 
+    /**
+     * The cloth's vertices against its faces alone, in order: a solver that steps one particle at a time
+     * (vertex block descent) projects these four-particle contacts after its sweep, as it does hard rows.
+     */
+    void projectFaces(Particles p, double h) {
+        if (self == null || !self.pointTriangle()) return;
+        long t0 = System.nanoTime();
+        for (int k = 0; k < count; k++) if (with[k] instanceof PointTriangleContacts) with[k].project(p, entry[k], h);
+        projectNanos += System.nanoTime() - t0;
+    }
+
     /** Contact k's projection moving only {@code particle} (one of its particles). */
     void projectOne(Particles p, int k, int particle, double h) {
-        if (with[k] == self) { with[k].projectOne(p, entry[k], particle, h); return; }
+        if (with[k].internal()) { with[k].projectOne(p, entry[k], particle, h); return; }
         int k3 = 3 * particle;
         double x = p.x[k3], y = p.x[k3 + 1], z = p.x[k3 + 2];
         with[k].projectOne(p, entry[k], particle, h);
@@ -225,7 +235,7 @@ final class ContactSet {
 
     /** Contact k alone (the probe's replay checks after each); a collider's move of its particle is kept for its work. */
     void project(Particles p, SolverContext ctx, int k) {
-        if (with[k] == self) { with[k].project(p, entry[k], ctx.h); return; }
+        if (with[k].internal()) { with[k].project(p, entry[k], ctx.h); return; }
         int k3 = 3 * particle[k];
         double x = p.x[k3], y = p.x[k3 + 1], z = p.x[k3 + 2];
         with[k].project(p, entry[k], ctx.h);

@@ -32,7 +32,8 @@ import java.util.Arrays;
  * the cloth needs more (more pairs than ever before), so steady stepping allocates nothing, and never
  * past {@link #MOST_PAIRS} a particle (a cloth moving far across itself in one substep, {@link #overloads()}).
  * Where it fails: a particle passing through the middle of a triangle between three others far apart
- * (the cloth's spacing larger than t) is not caught: this is particle–particle, not point–triangle; the
+ * (the cloth's spacing larger than t) is not caught: this is particle–particle, not point–triangle; with
+ * {@link #withPointTriangle} each vertex is also kept from the faces ({@link PointTriangleContacts}); the
  * {@link CrossingGuard}, made with the triangles, catches what passes (at a cost, docs/contacts.md), and a
  * {@link CrossingUntangler} ({@link #untangling}) puts back what has passed at a step's end.
  */
@@ -52,6 +53,8 @@ public final class SelfCollision extends Collider implements Team.Job {
     private final CrossingGuard guard;
     private final int[] same;
     private CrossingUntangler untangler;
+    /** Vertices kept from faces ({@link #withPointTriangle}), or null. */
+    private PointTriangleContacts faces;
     // The hash: particles sorted by cell; cellStart[h] .. cellStart[h + 1] - 1 index into sorted.
     private int[] cellStart = new int[0], sorted = new int[0], cellOf = new int[0];
     // The positions in the hash's order (candidates in a bucket are read one after another) and each
@@ -129,6 +132,21 @@ public final class SelfCollision extends Collider implements Team.Job {
         return this;
     }
 
+    /**
+     * Adds {@link PointTriangleContacts} on the triangles: each vertex kept the thickness from the faces of other
+     * parts of the cloth, on the side of the face it began each substep on. Returns this.
+     */
+    public SelfCollision withPointTriangle(int[] triangles) {
+        this.faces = new PointTriangleContacts(triangles, rest, same, thickness, staticFriction, kineticFriction);
+        return this;
+    }
+
+    /** Whether vertices are kept from faces as well as from particles ({@link #withPointTriangle}). */
+    public boolean pointTriangle() { return faces != null; }
+
+    /** (Vertex, face) pairs listed at the last build, 0 without {@link #withPointTriangle}. */
+    public int pointTrianglePairs() { return faces == null ? 0 : faces.pairCount(); }
+
     /** The untangler, or null when a crossed cloth is left crossed. */
     public CrossingUntangler untangler() { return untangler; }
 
@@ -188,10 +206,10 @@ public final class SelfCollision extends Collider implements Team.Job {
      */
     double skin() { return 0.5 * thickness; }
 
-    @Override void findContacts(Particles p, double h, ContactSet contacts) { findContacts(p, contacts, null); }
+    @Override void findContacts(Particles p, double h, ContactSet contacts) { findContacts(p, h, contacts, null); }
 
     /** The collide stage: the listed pairs, listed anew when the list ran out, by the team's threads if given. */
-    void findContacts(Particles p, ContactSet contacts, Team team) {
+    void findContacts(Particles p, double h, ContactSet contacts, Team team) {
         final int n = p.count();
         final double[] x = p.x, prev = p.prev;
         if (reachOf.length < n) { reachOf = new double[n]; built = new double[3 * n]; listed = false; }
@@ -206,6 +224,7 @@ public final class SelfCollision extends Collider implements Team.Job {
         }
         if (!listed || drift > 0.5 * skin()) build(p, team);
         for (int k = 0; k < pairs; k++) contacts.add(pairI[k], k, this);
+        if (faces != null) faces.findContacts(p, h, contacts);
     }
 
     /** Lists every pair that can come within t before some particle drifts s/2 from here. */
@@ -417,6 +436,8 @@ public final class SelfCollision extends Collider implements Team.Job {
         double dx = p.x[a] - p.x[b], dy = p.x[a + 1] - p.x[b + 1], dz = p.x[a + 2] - p.x[b + 2];
         return Math.sqrt(dx * dx + dy * dy + dz * dz) - thickness;
     }
+
+    @Override boolean internal() { return true; }
 
     /** The cloth's thickness is no solid a point can be inside. */
     @Override public double clearanceAt(double x, double y, double z) { return Double.POSITIVE_INFINITY; }

@@ -464,6 +464,7 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
                 for (int c = 0, nc = colours(); c < nc; c++) solveColour(c, 0, 1);
                 rest.sweep(particles, ctx);
                 gases.project(particles);
+                contacts.projectFaces(particles, ctx.h);
                 meetHeld();
             } else {
                 // The colours' order, one particle at a time (its step moves it alone, with its contacts and pins).
@@ -473,6 +474,7 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
                 }
                 rest.sweep(particles, ctx, probe);
                 gases.project(particles, probe);
+                contacts.projectFaces(particles, ctx.h);
                 meetHeld();
             }
             listener.afterSweep(substep, it);
@@ -867,6 +869,7 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
             if (id == 0) {
                 rest.sweep(particles, ctx);
                 gases.project(particles);
+                contacts.projectFaces(particles, ctx.h);
                 meetHeld();
             }
             t.await();
@@ -1038,7 +1041,7 @@ final class VertexBlockDescent implements SolveStage, Team.Job {
         for (int e = contactStart[v], end = contactStart[v + 1]; e < end; e++) {
             final int k = contactOf[e];
             final Collider with = contacts.with(k);
-            if (!(with instanceof SelfCollision)) contacts.projectOne(particles, k, v, ctx.h);
+            if (!with.internal()) contacts.projectOne(particles, k, v, ctx.h);
         }
     }
 }
