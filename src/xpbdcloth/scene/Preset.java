@@ -252,11 +252,14 @@ public final class Preset {
         public final boolean continuous;
         /** Whether a cloth found passed through itself at a step's end is put back (a CrossingUntangler). */
         public final boolean untangle;
+        /** Whether each vertex is kept the thickness from the cloth's faces too, not only from its particles (PointTriangleContacts). */
+        public final boolean pointTriangle;
 
-        public SelfCollisionSpec(double thickness, double staticFriction, double kineticFriction, boolean continuous, boolean untangle) {
+        public SelfCollisionSpec(double thickness, double staticFriction, double kineticFriction, boolean continuous, boolean untangle, boolean pointTriangle) {
             this.thickness = thickness; this.staticFriction = staticFriction; this.kineticFriction = kineticFriction;
             this.continuous = continuous;
             this.untangle = untangle;
+            this.pointTriangle = pointTriangle;
         }
     }
 

@@ -721,16 +721,16 @@ public final class PresetLoader {
 
         /** The cloth's thickness against itself: no more than its shortest edge at rest. */
         Preset.SelfCollisionSpec selfCollision(Node n, Preset.Cloth cloth) {
-            object(n, Set.of("thickness", "staticFriction", "kineticFriction", "continuous", "untangle"));
+            object(n, Set.of("thickness", "staticFriction", "kineticFriction", "continuous", "untangle", "pointTriangle"));
             Node t = required(n, "thickness");
             double thickness = number(t, Limits.THICKNESS);
             double edge = cloth.shortestEdge();
             if (thickness > edge)
                 throw fail(t.path, String.format(java.util.Locale.ROOT, "must be at most the cloth's shortest edge %.4g m, was %.4g m: thicker, neighbouring"
                         + " particles that are not neighbours at rest would hold the cloth apart from itself in steps", edge, thickness));
-            Node continuous = optional(n, "continuous"), untangle = optional(n, "untangle");
+            Node continuous = optional(n, "continuous"), untangle = optional(n, "untangle"), pointTriangle = optional(n, "pointTriangle");
             return new Preset.SelfCollisionSpec(thickness, number(required(n, "staticFriction"), Limits.FRICTION), number(required(n, "kineticFriction"), Limits.FRICTION),
-                    continuous != null && bool(continuous), untangle != null && bool(untangle));
+                    continuous != null && bool(continuous), untangle != null && bool(untangle), pointTriangle != null && bool(pointTriangle));
         }
 
         double margin(Node n) {

@@ -208,6 +208,7 @@ public final class Scene {
         int[] welded = garment == null ? null : garment.pattern.welded();
         if (welded != null) for (int i = 0; i < welded.length; i++) System.arraycopy(rest, 3 * welded[i], rest, 3 * i, 3);
         SelfCollision self = new SelfCollision(rest, triangles, welded, s.thickness, s.staticFriction, s.kineticFriction);
+        if (s.pointTriangle && cloth.triangles().length > 0) self.withPointTriangle(cloth.triangles());
         return s.untangle && cloth.triangles().length > 0 ? self.untangling(cloth.triangles()) : self;
     }
 

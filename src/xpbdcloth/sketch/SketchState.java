@@ -458,11 +458,11 @@ public final class SketchState {
     /** What z has chosen: off, particle pairs, or pairs and the continuous guard. */
     public String selfCollisionState() { return !selfCollisionOn ? "off" : continuousOn ? "continuous" : "particle pairs"; }
 
-    /** The preset's self-collision (its untangling too), or half the cloth's shortest edge with layers' friction 0.3 / 0.2; the guard as the keys set it. */
+    /** The preset's self-collision (its untangling and point–triangle contacts too), or half the cloth's shortest edge with layers' friction 0.3 / 0.2; the guard as the keys set it. */
     Preset.SelfCollisionSpec selfCollisionSpec() {
         Preset.SelfCollisionSpec p = preset.selfCollision;
-        return p != null ? new Preset.SelfCollisionSpec(p.thickness, p.staticFriction, p.kineticFriction, continuousOn, p.untangle)
-                : new Preset.SelfCollisionSpec(0.5 * preset.cloth.shortestEdge(), 0.3, 0.2, continuousOn, false);
+        return p != null ? new Preset.SelfCollisionSpec(p.thickness, p.staticFriction, p.kineticFriction, continuousOn, p.untangle, p.pointTriangle)
+                : new Preset.SelfCollisionSpec(0.5 * preset.cloth.shortestEdge(), 0.3, 0.2, continuousOn, false, false);
     }
 
     public boolean paused() { return paused; }

@@ -285,6 +285,12 @@ class PresetLoaderTest {
         assertNotNull(Scene.of(PresetLoader.parse("self.json", untangled)).simulation().selfCollision().untangler());
         e = assertThrows(PresetException.class, () -> PresetLoader.parse("self.json", untangled.replace("\"untangle\": true", "\"untangle\": 1")));
         assertEquals("selfCollision.untangle", e.field(), e.getMessage());
+        // Point–triangle contacts likewise.
+        assertFalse(scene.simulation().selfCollision().pointTriangle());
+        String faces = text.replace("\"kineticFriction\": 0.2 }", "\"kineticFriction\": 0.2, \"pointTriangle\": true }");
+        assertTrue(Scene.of(PresetLoader.parse("self.json", faces)).simulation().selfCollision().pointTriangle());
+        e = assertThrows(PresetException.class, () -> PresetLoader.parse("self.json", faces.replace("\"pointTriangle\": true", "\"pointTriangle\": \"yes\"")));
+        assertEquals("selfCollision.pointTriangle", e.field(), e.getMessage());
     }
 
     static final String TURNING_BODY = "{ \"type\": \"mesh\", \"file\": \"mannequin-turn.usda\", \"start\": 2.5, \"loop\": true, \"margin\": 0.005,"

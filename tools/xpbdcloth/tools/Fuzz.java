@@ -384,6 +384,9 @@ public final class Fuzz implements Callable<Integer> {
                 boolean untangle = cloth.triangles().length > 0 && new Random(~Double.doubleToLongBits(thickness)).nextBoolean();
                 xpbdcloth.engine.SelfCollision self = new xpbdcloth.engine.SelfCollision(cloth.mesh().positions(), continuous ? cloth.triangles() : null,
                         thickness, staticFriction, kineticFriction);
+                // Point–triangle contacts likewise, from a third stream.
+                if (cloth.triangles().length > 0 && new Random(Double.doubleToLongBits(thickness) ^ 0x9E3779B97F4A7C15L).nextBoolean())
+                    self.withPointTriangle(cloth.triangles());
                 sim.selfCollision(untangle ? self.untangling(cloth.triangles()) : self);
             }
         }

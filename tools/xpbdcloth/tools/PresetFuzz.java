@@ -64,7 +64,7 @@ final class PresetFuzz {
         return meshFacts = out;
     }
 
-    /** The stream of a seed's latest fields (the untangling), apart from its others. */
+    /** The stream of a seed's latest fields (the untangling, the point–triangle contacts), apart from its others. */
     static Random latest(long seed) { return new Random(Long.rotateLeft(seed, 17) ^ 0x2545F4914F6CDD1DL); }
 
     /** The preset a seed draws (its text only, nothing run). */
@@ -125,10 +125,11 @@ final class PresetFuzz {
 
         /**
          * Self-collision's continuous triangle guard, said in one case of two (on in one of those two); and its
-         * untangling, said likewise from a stream of its own.
+         * untangling and its point–triangle contacts, said likewise from a stream of their own.
          */
         String continuous() {
             String untangle = latest.nextBoolean() ? "" : ", \"untangle\": " + latest.nextBoolean();
+            untangle += latest.nextBoolean() ? "" : ", \"pointTriangle\": " + latest.nextBoolean();
             if (later.nextBoolean()) return untangle;
             return ", \"continuous\": " + later.nextBoolean() + untangle;
         }
