@@ -117,7 +117,7 @@ public final class KeyBindings {
         b.add(new KeyBinding('d', "wind direction +45°", SketchState::rotateWind, SketchState::windAngle));
         b.add(new KeyBinding('e', "wind speed +0.5 m/s", s -> s.changeWindSpeed(1), SketchState::windSpeed));
         b.add(new KeyBinding('E', "wind speed -0.5 m/s", s -> s.changeWindSpeed(-1), SketchState::windSpeed));
-        b.add(new KeyBinding('z', "self-collision: off, pairs, pairs + guard", SketchState::cycleSelfCollision, SketchState::selfCollisionState));
+        b.add(new KeyBinding('z', "self-collision: off, pairs, + point-triangle, + guard", SketchState::cycleSelfCollision, SketchState::selfCollisionState));
         b.add(new KeyBinding('x', "wireframe coloured by strain", s -> s.wireframe = !s.wireframe, s -> s.wireframe));
         b.add(new KeyBinding('o', "particles and contacts (red)", s -> s.showParticles = !s.showParticles, s -> s.showParticles));
         b.add(new KeyBinding('s', "spheres", s -> s.showSpheres = !s.showSpheres, s -> s.showSpheres));

@@ -91,6 +91,7 @@ public final class SketchState {
         windOn = p.wind != null;
         selfCollisionOn = p.selfCollision != null;
         continuousOn = p.selfCollision != null && p.selfCollision.continuous;
+        pointTriangleOn = p.selfCollision != null && p.selfCollision.pointTriangle;
         double[] u = p.wind == null ? new double[] {2, 0, 1.5} : p.wind.velocity;
         windAngle = Math.atan2(u[2], u[0]);
         windSpeed = Math.hypot(u[0], u[2]);
@@ -117,7 +118,7 @@ public final class SketchState {
             if (fabric != null && s.fabric() != fabric) s.useFabric(fabric);
             s.setWind(windOn);
             SelfCollision self = s.simulation().selfCollision();
-            if (selfCollisionOn != (self != null) || (self != null && continuousOn != (self.guard() != null)))
+            if (selfCollisionOn != (self != null) || (self != null && (continuousOn != (self.guard() != null) || pointTriangleOn != self.pointTriangle())))
                 s.simulation().selfCollision(selfCollisionOn ? Scene.selfCollision(s.cloth(), selfCollisionSpec(), s.preset().cloth.garment) : null);
             s.wind().setVelocity(windSpeed * Math.cos(windAngle), 0, windSpeed * Math.sin(windAngle));
         }
@@ -439,30 +440,35 @@ public final class SketchState {
 
     private boolean selfCollisionOn;
     private boolean continuousOn;
+    private boolean pointTriangleOn;
 
     /**
-     * Self-collision off, then particle pairs (the cloth keeps its thickness from itself), then pairs and the
-     * continuous triangle guard (no triangle passes through another in a substep; slower), then off again;
-     * no reset.
+     * Self-collision off, then particle pairs (the cloth keeps its thickness from itself), then pairs and
+     * point–triangle contacts (each vertex kept from the faces too), then pairs and the continuous triangle
+     * guard (no triangle passes through another in a substep; slowest), then off again; no reset.
      */
     public void cycleSelfCollision() {
-        if (!selfCollisionOn) { selfCollisionOn = true; continuousOn = false; }
-        else if (!continuousOn) continuousOn = true;
+        if (!selfCollisionOn) { selfCollisionOn = true; pointTriangleOn = false; continuousOn = false; }
+        else if (!pointTriangleOn && !continuousOn) pointTriangleOn = true;
+        else if (!continuousOn) { pointTriangleOn = false; continuousOn = true; }
         else { selfCollisionOn = false; continuousOn = false; }
         applyAll();
         say(!selfCollisionOn ? "self-collision off"
                 : String.format(java.util.Locale.ROOT, "self-collision on: thickness %.1f mm, %s", 1000 * selfCollisionSpec().thickness,
-                        continuousOn ? "particle pairs and the continuous triangle guard (slower)" : "particle pairs"));
+                        continuousOn ? "particle pairs and the continuous triangle guard (slower)"
+                                : pointTriangleOn ? "particle pairs and point-triangle contacts" : "particle pairs"));
     }
 
-    /** What z has chosen: off, particle pairs, or pairs and the continuous guard. */
-    public String selfCollisionState() { return !selfCollisionOn ? "off" : continuousOn ? "continuous" : "particle pairs"; }
+    /** What z has chosen: off, particle pairs, pairs and point–triangle contacts, or pairs and the continuous guard. */
+    public String selfCollisionState() {
+        return !selfCollisionOn ? "off" : continuousOn ? "continuous" : pointTriangleOn ? "point-triangle" : "particle pairs";
+    }
 
-    /** The preset's self-collision (its untangling and point–triangle contacts too), or half the cloth's shortest edge with layers' friction 0.3 / 0.2; the guard as the keys set it. */
+    /** The preset's self-collision (its untangling too), or half the cloth's shortest edge with layers' friction 0.3 / 0.2; the guard and point–triangle contacts as the keys set them. */
     Preset.SelfCollisionSpec selfCollisionSpec() {
         Preset.SelfCollisionSpec p = preset.selfCollision;
-        return p != null ? new Preset.SelfCollisionSpec(p.thickness, p.staticFriction, p.kineticFriction, continuousOn, p.untangle, p.pointTriangle)
-                : new Preset.SelfCollisionSpec(0.5 * preset.cloth.shortestEdge(), 0.3, 0.2, continuousOn, false, false);
+        return p != null ? new Preset.SelfCollisionSpec(p.thickness, p.staticFriction, p.kineticFriction, continuousOn, p.untangle, pointTriangleOn)
+                : new Preset.SelfCollisionSpec(0.5 * preset.cloth.shortestEdge(), 0.3, 0.2, continuousOn, false, pointTriangleOn);
     }
 
     public boolean paused() { return paused; }
