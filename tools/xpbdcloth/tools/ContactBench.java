@@ -19,7 +19,8 @@ import xpbdcloth.scene.Scene;
  * solve; bytes allocated per step over the last 100 steps (arrays have grown by then); and the most
  * vertex-disjoint triangle pairs crossing each other in any step. Last, drop-fold and denim-fold at 64² with
  * self-collision's continuous triangle guard ({@code self} = continuous), then with particle pairs and the
- * untangler ({@code self} = untangle).
+ * untangler ({@code self} = untangle), then with particle pairs and point–triangle contacts
+ * ({@code self} = point-triangle).
  *
  * <p>The cloth keeps the scene's size (1 m), so its spacing shrinks with N: the thickness is the scene's
  * or 0.9 of the spacing, whichever is less, and the floor's margin 5 mm or 0.45 of the spacing (both must
@@ -29,9 +30,12 @@ import xpbdcloth.scene.Scene;
 final class ContactBench {
     private ContactBench() {}
 
-    /** Self-collision in a row: none, particle pairs, pairs and the continuous guard, pairs and the untangler (the self column). */
+    /**
+     * Self-collision in a row: none, particle pairs, pairs and the continuous guard, pairs and the untangler,
+     * pairs and point–triangle contacts (the self column).
+     */
     enum Self {
-        OFF("off"), PAIRS("on"), CONTINUOUS("continuous"), UNTANGLE("untangle");
+        OFF("off"), PAIRS("on"), CONTINUOUS("continuous"), UNTANGLE("untangle"), POINT_TRIANGLE("point-triangle");
         final String column;
         Self(String column) { this.column = column; }
     }
@@ -55,6 +59,9 @@ final class ContactBench {
         // Particle pairs with the untangler (opt-in): what is crossed at a step's end is put back.
         System.out.println(measure("drop-fold", 64, Self.UNTANGLE, 1));
         System.out.println(measure("denim-fold", 64, Self.UNTANGLE, 1));
+        // Particle pairs with point–triangle contacts (opt-in): each vertex kept from the faces too.
+        System.out.println(measure("drop-fold", 64, Self.POINT_TRIANGLE, 1));
+        System.out.println(measure("denim-fold", 64, Self.POINT_TRIANGLE, 1));
     }
 
     /** One row: the scene at N × N with the given self-collision, on the given threads. */
@@ -93,7 +100,8 @@ final class ContactBench {
             floor.put("margin", Math.min(floor.get("margin").asDouble(), 0.45 * spacing));
             ObjectNode sc = (ObjectNode) root.get("selfCollision");
             if (self != Self.OFF) sc.put("thickness", Math.min(sc.get("thickness").asDouble(), 0.9 * spacing))
-                    .put("continuous", self == Self.CONTINUOUS).put("untangle", self == Self.UNTANGLE);
+                    .put("continuous", self == Self.CONTINUOUS).put("untangle", self == Self.UNTANGLE)
+                    .put("pointTriangle", self == Self.POINT_TRIANGLE);
             else root.remove("selfCollision");
             return Scene.of(PresetLoader.parse(name + " at " + n + "²", json.writeValueAsString(root)));
         } catch (IOException e) {
