@@ -44,6 +44,8 @@ final class ContactSet {
 
     /** The self-collision of the last collide stage, or null: its pairs are among the contacts. */
     private SelfCollision self;
+    /** The self-collision's vertex–face contacts are entries [facesFrom, facesTo). */
+    private int facesFrom, facesTo;
 
     int count() { return count; }
     SelfCollision self() { return self; }
@@ -68,7 +70,13 @@ final class ContactSet {
         this.self = self;
         for (int s = 0, ns = spheres.size(); s < ns; s++) spheres.get(s).findContacts(p, h, this);
         for (int s = 0, ns = solids.size(); s < ns; s++) solids.get(s).findContacts(p, h, this);
-        if (self != null) self.findContacts(p, h, this, team);
+        facesFrom = facesTo = 0;
+        if (self != null) {
+            self.findContacts(p, h, this, team);
+            facesFrom = count;
+            self.findFaceContacts(p, h, this);
+            facesTo = count;
+        }
         // The fixed planes last, so they have the last word in every sweep (see project).
         for (int s = 0, ns = planes.size(); s < ns; s++) planes.get(s).findContacts(p, h, this);
     }
@@ -218,9 +226,9 @@ final class ContactSet {
      * (vertex block descent) projects these four-particle contacts after its sweep, as it does hard rows.
      */
     void projectFaces(Particles p, double h) {
-        if (self == null || !self.pointTriangle()) return;
+        if (facesFrom == facesTo) return;
         long t0 = System.nanoTime();
-        for (int k = 0; k < count; k++) if (with[k] instanceof PointTriangleContacts) with[k].project(p, entry[k], h);
+        for (int k = facesFrom; k < facesTo; k++) with[k].project(p, entry[k], h);
         projectNanos += System.nanoTime() - t0;
     }
 

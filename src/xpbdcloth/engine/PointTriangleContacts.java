@@ -81,7 +81,7 @@ final class PointTriangleContacts extends Collider {
         // Cells as wide as a face's reach at rest (its edge and the listing reach, 1.75 t, either side): a box
         // then spans two cells an axis; cells a mean edge wide put every reach over TriangleGrid's most cells,
         // in the list every query reads.
-        final double reach = (1 + ContactSet.SLACK + SKIN) * thickness;
+        final double reach = (1 + ContactSet.SLACK + SelfCollision.SKIN) * thickness;
         final double meanEdge = CrossingGuard.meanEdge(TriangleEdges.of(this.triangles, n).ends(), rest);
         this.grid = new TriangleGrid(meanEdge + 2 * reach);
         // The particle pairs' neighbourhood. Two thicknesses and a mean edge held drop-fold at 128² (t = 0.9 of the
@@ -95,16 +95,6 @@ final class PointTriangleContacts extends Collider {
     /** Builds that listed only the first {@link #MOST_FACES} faces of some vertex. */
     long overloads() { return overloads; }
 
-    /**
-     * The skin s as a fraction of the thickness: pairs up to t(1 + slack) + s apart (and their motion) are
-     * listed, and the list holds while no particle drifts s/2. The particle pairs' skin: a skin of one and of
-     * two thicknesses made drop-fold's and denim-fold's steps 1.2–3.4 times longer (more pairs projected every
-     * sweep; a folding cloth lists again nearly every substep whatever its skin).
-     */
-    static final double SKIN = 0.5;
-
-    private double[] built = new double[0], reach = new double[0];
-    private boolean listedOnce;
     private long builds;
 
     /** Lists made since these contacts were made. */
@@ -112,12 +102,12 @@ final class PointTriangleContacts extends Collider {
 
     /**
      * Lists every (vertex, face) pair that can come within t(1 + slack) before some particle drifts half the
-     * skin from here, each particle's reach being its motion in the prediction.
+     * skin from here, each particle's reach being its motion in the prediction ({@code reach}, one per particle).
+     * The owner ({@link SelfCollision}) calls this when its particle pairs are listed again: the same reach, skin
+     * and drift decide both lists, measured once.
      */
-    private void list(Particles p) {
-        final double base = (1 + ContactSet.SLACK + SKIN) * thickness;
-        System.arraycopy(p.x, 0, built, 0, 3 * p.count());
-        listedOnce = true;
+    void list(Particles p, double[] reach) {
+        final double base = (1 + ContactSet.SLACK + SelfCollision.SKIN) * thickness;
         builds++;
         final double[] x = p.x, w = p.w;
         final int faces = triangles.length / 3, n = p.count();
@@ -190,23 +180,11 @@ final class PointTriangleContacts extends Collider {
     }
 
     /**
-     * The listed pairs as this substep's contacts (listed anew when some particle drifted, with its motion,
-     * half the skin from where the list saw it), each with the side of the face's plane its vertex began the
-     * substep on.
+     * The listed pairs as this substep's contacts ({@link #list} keeps the list), each with the side of the
+     * face's plane its vertex began the substep on.
      */
     @Override void findContacts(Particles p, double h, ContactSet contacts) {
-        final int n = p.count();
-        final double[] x = p.x, prev = p.prev;
-        if (built.length < 3 * n) { built = new double[3 * n]; reach = new double[n]; listedOnce = false; }
-        double drift = 0;
-        for (int i = 0; i < n; i++) {
-            final int k = 3 * i;
-            final double mx = x[k] - prev[k], my = x[k + 1] - prev[k + 1], mz = x[k + 2] - prev[k + 2];
-            reach[i] = Math.sqrt(mx * mx + my * my + mz * mz);
-            final double dx = x[k] - built[k], dy = x[k + 1] - built[k + 1], dz = x[k + 2] - built[k + 2];
-            drift = Math.max(drift, Math.sqrt(dx * dx + dy * dy + dz * dz) + reach[i]);
-        }
-        if (!listedOnce || drift > 0.5 * SKIN * thickness) list(p);
+        final double[] prev = p.prev;
         for (int m = 0; m < pairs; m++) {
             final int i = vertexOf[m], f = faceOf[m], k = 3 * i;
             final int a = 3 * triangles[3 * f], b = 3 * triangles[3 * f + 1], c = 3 * triangles[3 * f + 2];

@@ -66,8 +66,10 @@ class PointTriangleContactsTest {
         System.arraycopy(p.x, 0, p.prev, 0, p.x.length);
         PointTriangleContacts c = new PointTriangleContacts(TWO, p.positions().clone(), null, T, 0, 0);
         p.x[11] = endZ; // the prediction carries vertex 3 from startZ to endZ
-        ContactSet set = new ContactSet();
-        c.findContacts(p, 1e-3, set);
+        double[] reach = new double[6];
+        reach[3] = Math.abs(endZ - startZ); // each particle's motion in the prediction
+        c.list(p, reach);
+        c.findContacts(p, 1e-3, new ContactSet());
         return c;
     }
 
