@@ -356,7 +356,7 @@ public final class CrossingGuard implements Team.Job {
             for (int c = 0; c < m; c++) {
                 final int t = candidates[c];
                 final int si = same[i];
-                if (si == same[triangles[3 * t]] || si == same[triangles[3 * t + 1]] || si == same[triangles[3 * t + 2]] || !sh.overlaps(triangleReach, t)) continue;
+                if (si == same[triangles[3 * t]] || si == same[triangles[3 * t + 1]] || si == same[triangles[3 * t + 2]]) continue; // the grid returns only faces whose reach overlaps
                 sh.addFace(i, t);
             }
         }
@@ -373,7 +373,6 @@ public final class CrossingGuard implements Team.Job {
             final int[] candidates = sh.query.found();
             for (int c = 0; c < m; c++) {
                 final int t = candidates[c];
-                if (!sh.overlaps(triangleReach, t)) continue;
                 for (int side = 0; side < 3; side++) {
                     final int f = triangleEdges[3 * t + side];
                     if (f <= e || edgeSeen[f] == stamp) continue;
@@ -592,7 +591,7 @@ public final class CrossingGuard implements Team.Job {
             edgePairs[2 * edgePairCount++ + 1] = f;
         }
 
-        /** The box of particles i's and j's reaches; the triangles whose cells it overlaps, into the query. */
+        /** The box of particles i's and j's reaches; the triangles whose reaches overlap it, into the query. */
         int reachQuery(int i, int j) {
             lx = Math.min(particleReach[6 * i], particleReach[6 * j]); ly = Math.min(particleReach[6 * i + 1], particleReach[6 * j + 1]); lz = Math.min(particleReach[6 * i + 2], particleReach[6 * j + 2]);
             hx = Math.max(particleReach[6 * i + 3], particleReach[6 * j + 3]); hy = Math.max(particleReach[6 * i + 4], particleReach[6 * j + 4]); hz = Math.max(particleReach[6 * i + 5], particleReach[6 * j + 5]);

@@ -130,9 +130,7 @@ final class PointTriangleContacts extends Collider {
             final int[] list = query.found();
             int listed = 0;
             for (int s = 0; s < found; s++) {
-                final int f = list[s], b6 = 6 * f;
-                if (xi + ri < boxes[b6] || xi - ri > boxes[b6 + 3] || yi + ri < boxes[b6 + 1] || yi - ri > boxes[b6 + 4]
-                        || zi + ri < boxes[b6 + 2] || zi - ri > boxes[b6 + 5]) continue;
+                final int f = list[s];
                 final int a = triangles[3 * f], b = triangles[3 * f + 1], c = triangles[3 * f + 2];
                 if (w[i] + w[a] + w[b] + w[c] == 0 || touches(i, a, b, c)) continue;
                 // A corner nearer at rest than the neighbourhood makes the face nearer still: the cheap test first.
