@@ -6,7 +6,8 @@ import java.util.Arrays;
  * Triangles' boxes in a uniform grid of hashed cells over flat arrays, rebuilt whenever the boxes move: a
  * box is listed in every cell it overlaps (counting-sorted by bucket, a copy of the box beside each entry so a
  * bucket is read in one sweep), and a query box reads the buckets of the cells it overlaps and returns the
- * triangles whose boxes overlap it, each once (a triangle's mark is looked up only for those). With cells
+ * triangles whose boxes overlap it, each once: a one-cell query (a point's) reads the copied boxes in one sweep,
+ * and one over several cells, which share most of their triangles, tests each triangle's box once. With cells
  * about a triangle's size a box spans one to eight cells, and a query reads a few triangles where a tree's
  * walk visits dozens of nodes. A box spanning more than {@link #MOST_CELLS} cells (a triangle moving many
  * cells in a substep) is kept in a list every query reads instead. The arrays grow only when a build needs
