@@ -198,7 +198,7 @@ public final class CrossingUntangler {
             final int[] hits = query.found();
             for (int k = 0; k < n; k++) {
                 final int f = hits[k];
-                if (!overlaps(x, a, b, f) || shares(e / 2, f)) continue;
+                if (shares(e / 2, f)) continue; // the grid returns only faces whose box overlaps the edge's
                 pierce(x, e / 2, a, b, f);
             }
         }
@@ -277,15 +277,6 @@ public final class CrossingUntangler {
         x[3 * i] += by * nx;
         x[3 * i + 1] += by * ny;
         x[3 * i + 2] += by * nz;
-    }
-
-    private boolean overlaps(double[] x, int a, int b, int f) {
-        final int o = 6 * f;
-        for (int k = 0; k < 3; k++) {
-            final double lo = Math.min(x[3 * a + k], x[3 * b + k]), hi = Math.max(x[3 * a + k], x[3 * b + k]);
-            if (hi < faceBoxes[o + k] || lo > faceBoxes[o + 3 + k]) return false;
-        }
-        return true;
     }
 
     /**

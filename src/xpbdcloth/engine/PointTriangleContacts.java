@@ -95,11 +95,6 @@ final class PointTriangleContacts extends Collider {
     /** Builds that listed only the first {@link #MOST_FACES} faces of some vertex. */
     long overloads() { return overloads; }
 
-    private long builds;
-
-    /** Lists made since these contacts were made. */
-    long builds() { return builds; }
-
     /**
      * Lists every (vertex, face) pair that can come within t(1 + slack) before some particle drifts half the
      * skin from here, each particle's reach being its motion in the prediction ({@code reach}, one per particle).
@@ -108,7 +103,6 @@ final class PointTriangleContacts extends Collider {
      */
     void list(Particles p, double[] reach) {
         final double base = (1 + ContactSet.SLACK + SelfCollision.SKIN) * thickness;
-        builds++;
         final double[] x = p.x, w = p.w;
         final int faces = triangles.length / 3, n = p.count();
         if (boxes.length < 6 * faces) boxes = new double[6 * faces];
