@@ -36,8 +36,9 @@ import java.util.Arrays;
  * <p>Candidates: each vertex with the faces, and each edge with the edges, whose boxes could overlap over
  * the substep, listed from a {@link TriangleGrid} of the triangles' reaches (each particle's motion grown
  * by a skin of {@link #SKIN_EDGES} mean edges) and kept across substeps while every particle stays within
- * its reach (a Verlet list, as the particle pairs keep theirs): searching a grid rebuilt every pass was
- * most of the guard's time, and a cloth that folds slowly keeps its lists for several substeps. The skin
+ * its reach moved by one shift common to all (a Verlet list, as the particle pairs keep theirs, that a cloth
+ * falling or sliding as a whole does not outrun): searching a grid rebuilt every pass was most of the guard's
+ * time, and a cloth that folds slowly keeps its lists for several substeps. The skin
  * sets only how often the lists are made and how long they are, never what is found. Each pass clears the
  * listed pairs by their swept boxes, bounding spheres, the distance at the start against the most the
  * features can move, and the cubic's Bernstein coefficients, before any root is sought. Edge pairs are
@@ -109,7 +110,7 @@ public final class CrossingGuard implements Team.Job {
      */
     private final double[] sphere, edgeMove, triangleMove;
 
-    private long events, unresolved, passes, overloads;
+    private long events, unresolved, passes, overloads, listings;
     /** Each particle's representative: features with one in common are neighbours, never an event. */
     private final int[] same;
     /**
@@ -188,6 +189,9 @@ public final class CrossingGuard implements Team.Job {
 
     /** Substeps put back whole because their candidates would have passed {@link #MOST_CANDIDATES} per feature. */
     public long overloads() { return overloads; }
+
+    /** Times the candidates were listed (the grid of reaches built again). */
+    public long listings() { return listings; }
 
     private boolean overflowed() {
         for (Share sh : shares) if (sh.overflowed) return true;
@@ -386,14 +390,25 @@ public final class CrossingGuard implements Team.Job {
         }
     }
 
-    /** Whether every particle's start and end lie inside its reach (false for a non-finite one). */
+    /**
+     * Whether the lists still hold: some one shift s, the same for every particle, puts each particle's start
+     * and end inside its reach (false for a non-finite one). Two features whose reaches did not overlap at
+     * listing cannot meet while both lie in their reaches moved by the same s, so a cloth that falls or slides
+     * as a whole keeps its lists (s = 0 is the plain Verlet test); only motion of its parts against each other
+     * past the skin lists again. Per axis, s is bounded by max(start, x) − hi ≤ s ≤ min(start, x) − lo for every
+     * particle, so one pass finds whether such an s exists.
+     */
     private boolean withinReach(double[] start, double[] x) {
-        for (int i = 0; i < particles; i++)
-            for (int d = 0; d < 3; d++) {
+        for (int d = 0; d < 3; d++) {
+            double least = -Double.MAX_VALUE, most = Double.MAX_VALUE;
+            for (int i = 0; i < particles; i++) {
                 final int k = 3 * i + d;
-                final double lo = particleReach[6 * i + d], hi = particleReach[6 * i + 3 + d];
-                if (!(start[k] >= lo && start[k] <= hi && x[k] >= lo && x[k] <= hi)) return false;
+                final double a = start[k], b = x[k];
+                least = Math.max(least, Math.max(a, b) - particleReach[6 * i + 3 + d]);
+                most = Math.min(most, Math.min(a, b) - particleReach[6 * i + d]);
             }
+            if (!(least <= most)) return false;
+        }
         return true;
     }
 
@@ -417,6 +432,7 @@ public final class CrossingGuard implements Team.Job {
                 triangleReach[6 * t + 3 + d] = hi;
             }
         grid.build(triangleReach, triangles.length / 3);
+        listings++;
         listed = true;
         passLists = true;
     }

@@ -163,6 +163,31 @@ class CrossingGuardTest {
     }
 
     /**
+     * The lists hold while the cloth moves as a whole: a 16² cloth falling freely for a second (4.9 m, some 300
+     * skins) is listed at most twice, since no two of its features move against each other (the second time
+     * only because a substep's own motion, which each reach spans, grows with the speed: 3.9 cm by the end,
+     * against a skin of 1.7 cm); the same cloth pinned at one corner swings, its parts moving against each
+     * other, and is listed again and again as they pass the skin.
+     */
+    @Test
+    void aClothFallingAsAWholeKeepsItsLists() {
+        for (boolean pinned : new boolean[] {false, true}) {
+            Cloth c = new ClothBuilder().resolution(16, 16).size(1, 1).origin(0, 1, 0).arealDensity(0.2).family(ConstraintFamily.STRUCTURAL, 1, 0).build();
+            Particles p = c.particles();
+            if (pinned) p.pin(0);
+            Simulation sim = c.simulation(new SolverSettings().withIterations(2).withSubsteps(5));
+            sim.selfCollision(new SelfCollision(p.positions().clone(), c.triangles(), 1e-3, 0, 0));
+            double top = p.y(p.count() - 1);
+            for (int step = 0; step < 50; step++) sim.step(0.02);
+            long listings = sim.selfCollision().guard().listings();
+            if (!pinned) {
+                assertEquals(-4.9, p.y(p.count() - 1) - top, 0.1, "fell freely");
+                assertTrue(listings <= 2, "listed at most twice in free fall: " + listings + " times");
+            } else assertTrue(listings > 10, "a swinging cloth is listed again: " + listings + " times");
+        }
+    }
+
+    /**
      * Steps of a guarded cloth allocate nothing once its arrays have grown: the collapsing cloth, after its
      * first 40 steps, counted over two windows of 20 (the smaller taken, as AllocationTest does), on one
      * thread and on two (the caller's thread is counted; the shares are made once).
